@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    sinterFoam
+
+Description
+    Transient thermal CFD-DEM solver for dense gas-particle flows: fluidized
+    beds of hot micron powder that may sinter and defluidize.
+
+    Gas (thesis Ch. 4.2.1 / 5.2.1), volume-averaged with voidage eps:
+        d(eps rho)/dt + div(eps rho U) = 0                           (4.1)
+        d(eps rho U)/dt + div(eps rho U U)
+            = -eps grad(p) + div(eps tau) - S + eps rho g            (4.2)
+        d(eps rho h)/dt + div(eps rho U h)
+            = div(eps k_eff/Cp grad(h)) + Q_pf                        (4.5)
+        eps k_eff = (1 - sqrt(1 - eps)) k                             (4.6)
+    Pressure-velocity coupling: PIMPLE; the particle drag is semi-implicit,
+    explicit particle forces and gravity enter the pressure equation as face
+    fluxes.
+
+    Gas properties come from constant/thermophysicalProperties (rhoThermo):
+    constant density at the operating temperature (equationOfState
+    rhoConst, Ch. 5) or ideal gas at a thermodynamic pressure
+    (incompressiblePerfectGas, Ch. 4).
+
+    Particles: one thermal colliding cloud, constant/cloudProperties.
+
+    Data flow of a time step:
+        gas -> cloud (move, collide, drag, heat) -> voidage and sources
+            -> gas (momentum, energy, pressure)
+*/
+
+#include "fvCFD.H"
+#include "rhoThermo.H"
+#include "SLGThermo.H"
+#include "pimpleControl.H"
+#include "basicSinterCloud.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Thermal CFD-DEM solver for fluidized beds of sintering powder"
+    );
+
+    #include "postProcess.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Gas -> cloud: parcels move, collide, take drag and heat
+        cloud.evolve();
+
+        // Cloud -> gas: voidage from the new parcel positions
+        #include "updateVoidage.H"
+
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+            #include "EEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+
+        runTime.write();
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+    return 0;
+}

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+// Run-time selection tables of every submodel family of basicSinterCloud.
+
+#include "basicSinterCloud.H"
+
+#include "makeParcelCloudFunctionObjects.H"
+#include "makeThermoParcelForces.H"
+#include "makeParcelDispersionModels.H"
+#include "makeParcelInjectionModels.H"
+#include "makeParcelCollisionModels.H"
+#include "makeParcelPatchInteractionModels.H"
+#include "makeParcelStochasticCollisionModels.H"
+#include "makeThermoParcelSurfaceFilmModels.H"
+#include "makeParcelHeatTransferModels.H"
+
+// sinterFoam's own forces
+#include "BeetstraDragForce.H"
+#include "GasPressureGradientForce.H"
+#include "WeightForce.H"
+
+// OpenFOAM's stock families
+makeParcelCloudFunctionObjects(basicSinterCloud);
+makeThermoParcelForces(basicSinterCloud);
+makeParcelDispersionModels(basicSinterCloud);
+makeParcelInjectionModels(basicSinterCloud);
+makeParcelCollisionModels(basicSinterCollidingCloud);
+makeParcelPatchInteractionModels(basicSinterCloud);
+makeParcelStochasticCollisionModels(basicSinterCloud);
+makeParcelSurfaceFilmModels(basicSinterCloud);
+makeParcelHeatTransferModels(basicSinterCloud);
+
+// sinterFoam's additions to the force table
+makeParticleForceModelType(BeetstraDragForce, basicSinterCloud);
+makeParticleForceModelType(GasPressureGradientForce, basicSinterCloud);
+makeParticleForceModelType(WeightForce, basicSinterCloud);
