@@ -35,6 +35,8 @@ Description
 #include "rhoThermo.H"
 #include "SLGThermo.H"
 #include "pimpleControl.H"
+#include "constrainPressure.H"
+#include "constrainHbyA.H"
 #include "basicSinterCloud.H"
 
 int main(int argc, char *argv[])
@@ -72,12 +74,15 @@ int main(int argc, char *argv[])
         while (pimple.loop())
         {
             #include "UEqn.H"
-            #include "EEqn.H"
 
             while (pimple.correct())
             {
                 #include "pEqn.H"
             }
+
+            // Energy with the mass flux that satisfies continuity for the
+            // new voidage: conservative, and exact for uniform temperature
+            #include "EEqn.H"
         }
 
         runTime.write();

@@ -3,7 +3,7 @@
 
 #include "bedPressureDrop.H"
 #include "volFields.H"
-#include "uniformDimensionedFields.H"
+#include "gravityMeshObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
 
@@ -109,7 +109,7 @@ bool Foam::functionObjects::bedPressureDrop::write()
     }
     reduce(mass, sumOp<scalar>());
 
-    const scalar g = mag(lookupObject<uniformDimensionedVectorField>("g").value());
+    const scalar g = mag(meshObjects::gravity::New(mesh_.time()).value());
     const scalar area = gSum(mesh_.magSf().boundaryField()[lowerPatch_]);
     const scalar WbyA = g*mass/area;
 

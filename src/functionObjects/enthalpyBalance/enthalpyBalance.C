@@ -63,6 +63,7 @@ bool Foam::functionObjects::enthalpyBalance::read(const dictionary& dict)
     hName_ = dict.lookupOrDefault<word>("h", "h");
     rhoName_ = dict.lookupOrDefault<word>("rho", "rho");
     phiName_ = dict.lookupOrDefault<word>("phi", "phi");
+    alphaEffName_ = dict.lookupOrDefault<word>("alphaEff", "alphaEff");
 
     return true;
 }
@@ -98,12 +99,29 @@ Foam::scalar Foam::functionObjects::enthalpyBalance::outflowRate() const
     const surfaceScalarField& phi = lookupObject<surfaceScalarField>(phiName_);
     const volScalarField& h = lookupObject<volScalarField>(hName_);
 
+    const volScalarField* alphaEffPtr =
+        mesh_.cfindObject<volScalarField>(alphaEffName_);
+
     scalar rate = 0;
     forAll(phi.boundaryField(), patchi)
     {
-        if (!phi.boundaryField()[patchi].coupled())
+        const fvPatchScalarField& hp = h.boundaryField()[patchi];
+        if (hp.coupled())
         {
-            rate += sum(phi.boundaryField()[patchi]*h.boundaryField()[patchi]);
+            continue;
+        }
+
+        // Convected out
+        rate += sum(phi.boundaryField()[patchi]*hp);
+
+        // Conducted out: -alphaEff dh/dn |Sf|
+        if (alphaEffPtr)
+        {
+            rate -= sum
+            (
+                alphaEffPtr->boundaryField()[patchi]*hp.snGrad()
+               *mesh_.magSf().boundaryField()[patchi]
+            );
         }
     }
     return returnReduce(rate, sumOp<scalar>());
@@ -116,9 +134,11 @@ bool Foam::functionObjects::enthalpyBalance::execute()
     if (time.timeIndex() != timeIndex_)
     {
         timeIndex_ = time.timeIndex();
-        if (timeIndex_ > time.startTimeIndex())
+
+        // Face fluxes of the step that just ended, counted from the step
+        // after the one that set the initial totals
+        if (haveInitial_)
         {
-            // Face fluxes of the step that just ended
             Hout_ += outflowRate()*time.deltaTValue();
         }
     }

@@ -13,12 +13,13 @@ Foam::BeetstraDragForce<CloudType>::BeetstraDragForce
     const dictionary& dict
 )
 :
-    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    // Coefficients optional: `BeetstraDrag;` or `BeetstraDrag { ... }`
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
     voidage_
     (
         mesh.lookupObject<volScalarField>
         (
-            this->coeffs().template lookupOrDefault<word>("voidage", "voidage")
+            dict.template lookupOrDefault<word>("voidage", "voidage")
         )
     ),
     K_(coarseGrainFactor(owner.constProps().dict()))

@@ -12,8 +12,9 @@ Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
     const dictionary& dict
 )
 :
-    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    pName_(this->coeffs().template lookupOrDefault<word>("p", "p"))
+    // Coefficients optional: `gasPressureGradient;` or with a dictionary
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
+    pName_(dict.template lookupOrDefault<word>("p", "p"))
 {}
 
 
