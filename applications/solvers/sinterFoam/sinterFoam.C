@@ -38,6 +38,7 @@ Description
 #include "constrainPressure.H"
 #include "constrainHbyA.H"
 #include "basicSinterCloud.H"
+#include "diffusionSmoother.H"
 
 int main(int argc, char *argv[])
 {
