@@ -24,6 +24,10 @@ Description
     rhoConst, Ch. 5) or ideal gas at a thermodynamic pressure
     (incompressiblePerfectGas, Ch. 4).
 
+    With the ideal gas the density follows the energy equation inside the
+    PIMPLE loop: use nOuterCorrectors >= 3 for a conservative enthalpy
+    balance (the solver warns otherwise; test/thermalBox measures it).
+
     Particles: one thermal colliding cloud, constant/cloudProperties.
 
     Data flow of a time step:
