@@ -43,6 +43,7 @@ Description
 #include "constrainHbyA.H"
 #include "basicSinterCloud.H"
 #include "diffusionSmoother.H"
+#include "volumeFractionModel.H"
 
 int main(int argc, char *argv[])
 {

@@ -1,0 +1,405 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    defluidizationMap
+
+Group
+    sinterFoam/utilities
+
+Description
+    The force-balance predictor of thesis Ch. 2 (§2.4.2): for each powder,
+    the temperature at which the solid-bridge force (eq 2.4, contact time
+    of eq 2.11) equals the maximum Hertz collision force (eq 2.5-2.8) of
+    two identical particles of the powder's d50 colliding at v_n:
+
+        v_n = first of collisionVelocities (1e-4 m/s): transition T_t
+        v_n = last  of collisionVelocities (5e-4 m/s): defluidization T_d
+
+    Writes, per powder, postProcessing/defluidizationMap/<powder>.dat: the
+    forces normalised by the particle weight m g against temperature (the
+    content of Fig 2.11): solid bridge for the three surface models and
+    the collision force at every v_n, and the Ergun drag (eq 2.9-2.10) at
+    the powder's lowest and highest superficial gas velocity.
+
+    -calibrate: the tensile strength sigma(T) is the one input the thesis
+    does not tabulate. Given one powder's measured (or reference) T_t and
+    T_d (sub-dictionary calibration), prints the sigma at both temperatures
+    that puts the crossings there, and the curve sigma(T) = a + b T^n
+    (exponent n given) through them as a tensileStrength entry.
+
+Usage
+    defluidizationMap [-dict FILE] [-calibrate]
+
+    system/defluidizationMapDict (temperatures in kelvin):
+    \table
+        Property            | Description                                | Required
+        material            | name of a sub-dictionary of materials      | yes
+        materials           | material dictionaries (sinterMaterial)     | yes
+        bridgeModel         | threeMicroContacts, smooth, nineMicroContacts: C of eq 2.4 for T_t, T_d | yes
+        collisionVelocities | v_n list [m/s], > 0, at least one           | yes
+        Tmin, Tmax          | temperature range [K], 0 < Tmin < Tmax      | yes
+        nTemperatures       | points of the written curves, >= 2          | yes
+        gravity             | |g| [m/s^2], > 0                            | yes
+        gas                 | viscosity [Pa s], density [kg/m^3], voidage [-] of the Ergun drag | yes
+        powders             | per powder: d50 [m] > 0; superficialVelocities (u_min u_max) [m/s] of the drag band | yes
+        calibration         | powder, Tt, Td [K], exponent n (only with -calibrate) | -calibrate
+    \endtable
+*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "IOmanip.H"
+#include "mathematicalConstants.H"
+#include "sinterMaterial.H"
+#include "solidBridge.H"
+#include "HertzCollision.H"
+#include "ErgunDrag.H"
+
+using namespace Foam;
+
+namespace
+{
+
+const scalar degC = 273.15;
+
+scalar positive(const dictionary& dict, const word& key)
+{
+    const scalar value(dict.get<scalar>(key));
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << value << " must be > 0" << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+// One powder: identical spheres of the powder's d50
+struct powder
+{
+    word name;
+    scalar d;
+    scalar m;
+    scalarList uSuperficial;
+};
+
+
+// The lowest temperature of [Tmin, Tmax] at which f(T) = F_sb - F_n turns
+// from negative to non-negative; -1 if it does not
+template<class Func>
+scalar crossing(const Func& f, const scalar Tmin, const scalar Tmax)
+{
+    const label nScan = 4000;
+    scalar Tlow = Tmin;
+    scalar fLow = f(Tlow);
+
+    if (fLow >= 0)
+    {
+        return Tmin;
+    }
+
+    for (label i = 1; i <= nScan; ++i)
+    {
+        const scalar Thigh = Tmin + (Tmax - Tmin)*i/nScan;
+        if (f(Thigh) >= 0)
+        {
+            // Bisection to round-off of the temperature
+            scalar a = Tlow, b = Thigh;
+            for (label iter = 0; iter < 100 && b - a > 1e-9; ++iter)
+            {
+                const scalar c = 0.5*(a + b);
+                (f(c) < 0 ? a : b) = c;
+            }
+            return 0.5*(a + b);
+        }
+        Tlow = Thigh;
+    }
+
+    return -1;
+}
+
+
+void printTemperature(const scalar T)
+{
+    if (T < 0)
+    {
+        Info<< "      none in range";
+    }
+    else
+    {
+        Info<< "  " << setw(8) << T << " K (" << setw(7) << T - degC << " C)";
+    }
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Force-balance prediction of the transition and defluidization"
+        " temperatures of a sintering powder (thesis Ch. 2)"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::addOption("dict", "file", "Use alternative defluidizationMapDict");
+    argList::addBoolOption
+    (
+        "calibrate",
+        "Print the tensileStrength a + b T^n that reproduces the calibration"
+        " powder's Tt and Td"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const fileName dictPath
+    (
+        args.lookupOrDefault<fileName>
+        (
+            "dict",
+            runTime.system()/"defluidizationMapDict"
+        )
+    );
+
+    IOdictionary mapDict
+    (
+        IOobject
+        (
+            dictPath,
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        ),
+        nullptr
+    );
+
+    // Material and laws
+    const word materialName(mapDict.get<word>("material"));
+    const dictionary& materials = mapDict.subDict("materials");
+    if (!materials.isDict(materialName))
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "material " << materialName << " is not a sub-dictionary of"
+               " materials" << nl << "Valid materials are: "
+            << materials.toc() << exit(FatalIOError);
+    }
+    const sinterMaterial material(materials.subDict(materialName));
+    const solidBridge bridge(material, mapDict);
+
+    const scalarList vn(mapDict.get<scalarList>("collisionVelocities"));
+    if (vn.empty())
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "collisionVelocities is empty: give at least one v_n [m/s]"
+            << exit(FatalIOError);
+    }
+    for (const scalar v : vn)
+    {
+        if (!(v > 0))
+        {
+            FatalIOErrorInFunction(mapDict)
+                << "collisionVelocities " << vn << ": every v_n must be > 0"
+                << exit(FatalIOError);
+        }
+    }
+
+    const scalar Tmin(positive(mapDict, "Tmin"));
+    const scalar Tmax(positive(mapDict, "Tmax"));
+    if (Tmax <= Tmin)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "Tmax " << Tmax << " must be above Tmin " << Tmin
+            << exit(FatalIOError);
+    }
+    const label nT(mapDict.get<label>("nTemperatures"));
+    if (nT < 2)
+    {
+        FatalIOErrorInFunction(mapDict)
+            << "nTemperatures " << nT << " must be >= 2" << exit(FatalIOError);
+    }
+    const scalar g(positive(mapDict, "gravity"));
+
+    const dictionary& gasDict = mapDict.subDict("gas");
+    const scalar muGas(positive(gasDict, "viscosity"));
+    const scalar rhoGas(positive(gasDict, "density"));
+    const scalar epsGas(positive(gasDict, "voidage"));
+    if (epsGas >= 1)
+    {
+        FatalIOErrorInFunction(gasDict)
+            << "voidage " << epsGas << " must lie in (0, 1)"
+            << exit(FatalIOError);
+    }
+
+    // Powders
+    const dictionary& powdersDict = mapDict.subDict("powders");
+    List<powder> powders;
+    for (const entry& e : powdersDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(powdersDict)
+                << "powders: entry " << e.keyword() << " is not a dictionary"
+                << exit(FatalIOError);
+        }
+        const dictionary& pd = e.dict();
+        powder p;
+        p.name = e.keyword();
+        p.d = positive(pd, "d50");
+        p.m = material.rho()*constant::mathematical::pi/6*pow3(p.d);
+        p.uSuperficial = pd.get<scalarList>("superficialVelocities");
+        if (p.uSuperficial.empty() || min(p.uSuperficial) <= 0)
+        {
+            FatalIOErrorInFunction(pd)
+                << "superficialVelocities " << p.uSuperficial
+                << " must hold velocities > 0 [m/s]" << exit(FatalIOError);
+        }
+        powders.append(p);
+    }
+    if (powders.empty())
+    {
+        FatalIOErrorInFunction(powdersDict)
+            << "powders is empty" << exit(FatalIOError);
+    }
+
+    Info<< nl << "Material " << material.name() << ", rho " << material.rho()
+        << " kg/m^3, Y " << material.Y() << " Pa, nu " << material.nu()
+        << "; bridge model " << solidBridge::surfaceModelNames[bridge.model()]
+        << " (C = " << bridge.C() << ")" << nl
+        << "v_n for T_t: " << vn.first() << " m/s, for T_d: " << vn.last()
+        << " m/s" << nl << endl;
+
+    // Calibration of sigma(T) on one powder
+    if (args.found("calibrate"))
+    {
+        const dictionary& cal = mapDict.subDict("calibration");
+        const word which(cal.get<word>("powder"));
+        const scalar Tt(positive(cal, "Tt"));
+        const scalar Td(positive(cal, "Td"));
+
+        label pi = -1;
+        forAll(powders, i)
+        {
+            if (powders[i].name == which) pi = i;
+        }
+        if (pi < 0)
+        {
+            FatalIOErrorInFunction(cal)
+                << "powder " << which << " is not in powders" << exit(FatalIOError);
+        }
+        const powder& p = powders[pi];
+        const HertzCollision hertz(p.d/2, p.m, material.Y(), material.nu());
+
+        const scalar sigmaT =
+            hertz.maxNormalForce(vn.first())
+           /bridge.forcePerStrength(p.d/2, Tt, hertz.contactTime(vn.first()));
+        const scalar sigmaD =
+            hertz.maxNormalForce(vn.last())
+           /bridge.forcePerStrength(p.d/2, Td, hertz.contactTime(vn.last()));
+
+        // sigma(T) = a + b T^n through both points
+        const scalar n(positive(cal, "exponent"));
+        const scalar b = (sigmaD - sigmaT)/(Foam::pow(Td, n) - Foam::pow(Tt, n));
+        const scalar a = sigmaT - b*Foam::pow(Tt, n);
+
+        const label oldPrecision = Info().precision(10);
+        Info<< "Calibration on " << p.name << ":" << nl
+            << "    sigma(" << Tt << " K) = " << sigmaT << " Pa" << nl
+            << "    sigma(" << Td << " K) = " << sigmaD << " Pa" << nl
+            << "    tensileStrength polynomial ((" << a << " 0) ("
+            << b << " " << n << "));" << nl << endl;
+        Info().precision(oldPrecision);
+    }
+
+    // Temperatures and curves per powder
+    const fileName outDir(runTime.path()/"postProcessing"/"defluidizationMap");
+    mkDir(outDir);
+
+    Info<< "powder      d50 [m]      T_t                         T_d" << nl;
+
+    for (const powder& p : powders)
+    {
+        const scalar rp = p.d/2;
+        const scalar weight = p.m*g;
+        const HertzCollision hertz(rp, p.m, material.Y(), material.nu());
+
+        const auto balance = [&](const scalar v)
+        {
+            const scalar Fn = hertz.maxNormalForce(v);
+            const scalar tc = hertz.contactTime(v);
+            return [&bridge, rp, Fn, tc](const scalar T)
+            {
+                return bridge.force(rp, T, tc) - Fn;
+            };
+        };
+
+        const scalar Tt = crossing(balance(vn.first()), Tmin, Tmax);
+        const scalar Td = crossing(balance(vn.last()), Tmin, Tmax);
+
+        Info<< setw(8) << p.name << "  " << setw(10) << p.d;
+        printTemperature(Tt);
+        printTemperature(Td);
+        Info<< nl;
+
+        // Curves: F/(m g) against T
+        OFstream os(outDir/(p.name + ".dat"));
+        os.precision(8);
+        os  << "# " << p.name << ": d50 " << p.d << " m, m " << p.m
+            << " kg, m g " << weight << " N; material " << material.name()
+            << "; forces / (m g)" << nl
+            << "# T_t " << Tt << " K, T_d " << Td << " K (bridge model "
+            << solidBridge::surfaceModelNames[bridge.model()] << ")" << nl
+            << "# T[K] T[C]";
+        for (const scalar v : vn)
+        {
+            os  << " Fn(vn=" << v << ")";
+            for (const word& name : solidBridge::surfaceModelNames.sortedToc())
+            {
+                os  << " Fsb_" << name << "(vn=" << v << ")";
+            }
+        }
+        os  << " Fd(u=" << min(p.uSuperficial) << ")"
+            << " Fd(u=" << max(p.uSuperficial) << ")" << nl;
+
+        // Drag on a particle at rest in the interstitial gas u_0/eps
+        const scalar FdMin = ErgunDrag::particleForce
+        (
+            epsGas, muGas, rhoGas, p.d, min(p.uSuperficial)/epsGas
+        );
+        const scalar FdMax = ErgunDrag::particleForce
+        (
+            epsGas, muGas, rhoGas, p.d, max(p.uSuperficial)/epsGas
+        );
+
+        for (label i = 0; i < nT; ++i)
+        {
+            const scalar T = Tmin + (Tmax - Tmin)*i/(nT - 1);
+            os  << T << ' ' << T - degC;
+            for (const scalar v : vn)
+            {
+                const scalar tc = hertz.contactTime(v);
+                os  << ' ' << hertz.maxNormalForce(v)/weight;
+                for (const word& name : solidBridge::surfaceModelNames.sortedToc())
+                {
+                    const solidBridge sb
+                    (
+                        material,
+                        solidBridge::surfaceModelNames[name]
+                    );
+                    os  << ' ' << sb.force(rp, T, tc)/weight;
+                }
+            }
+            os  << ' ' << FdMin/weight << ' ' << FdMax/weight << nl;
+        }
+    }
+
+    Info<< nl << "Curves written to " << outDir << nl << nl << "End" << nl
+        << endl;
+
+    return 0;
+}

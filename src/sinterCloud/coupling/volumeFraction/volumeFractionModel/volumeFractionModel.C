@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "volumeFractionModel.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(volumeFractionModel, 0);
+    defineRunTimeSelectionTable(volumeFractionModel, dictionary);
+}
+
+
+Foam::volumeFractionModel::volumeFractionModel
+(
+    const fvMesh& mesh,
+    const dictionary&
+)
+:
+    mesh_(mesh)
+{}
+
+
+Foam::autoPtr<Foam::volumeFractionModel> Foam::volumeFractionModel::New
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    const word methodName(dict.get<word>("volumeFraction"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(methodName);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "volumeFraction",
+            methodName,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    Info<< "Selecting volumeFraction " << methodName << endl;
+
+    return autoPtr<volumeFractionModel>(cstrIter()(mesh, dict));
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::volumeFractionModel::theta
+(
+    const basicSinterCloud& cloud
+) const
+{
+    UPtrList<const particle> parcels(cloud.size());
+    scalarField solidVolume(cloud.size());
+
+    label i = 0;
+    for (const basicSinterParcel& p : cloud)
+    {
+        parcels.set(i, &p);
+        solidVolume[i] = p.nParticle()*p.volume();
+        ++i;
+    }
+
+    return theta(parcels, solidVolume);
+}

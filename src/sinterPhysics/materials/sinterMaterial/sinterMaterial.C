@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "sinterMaterial.H"
+
+namespace
+{
+
+// A required positive (or in-range) scalar, fatal naming the keyword
+Foam::scalar readRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar lower,
+    const Foam::scalar upper,
+    const char* what
+)
+{
+    const Foam::scalar value(dict.get<Foam::scalar>(key));
+
+    if (!(value > lower && value < upper))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << value << " invalid: " << what
+            << Foam::exit(Foam::FatalIOError);
+    }
+
+    return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
+:
+    name_(dict.dictName()),
+    rho_(readRange(dict, "density", 0, GREAT, "must be > 0 [kg/m^3]")),
+    Y_(readRange(dict, "youngsModulus", 0, GREAT, "must be > 0 [Pa]")),
+    nu_(readRange(dict, "poissonsRatio", -SMALL, 0.5, "must lie in [0, 0.5)")),
+    gamma_(readRange(dict, "surfaceTension", 0, GREAT, "must be > 0 [N/m]")),
+    delta_(readRange(dict, "latticeConstant", 0, GREAT, "must be > 0 [m]")),
+    Ds_(dict),
+    sigma_(Function1<scalar>::New("tensileStrength", dict))
+{}
+
+
+Foam::scalar Foam::sinterMaterial::sigma(const scalar T) const
+{
+    const scalar s = sigma_->value(T);
+
+    if (!(s > 0))
+    {
+        FatalErrorInFunction
+            << "Material " << name_ << ": tensileStrength(" << T << " K) = "
+            << s << " Pa is not positive; check the tensileStrength entry"
+            << exit(FatalError);
+    }
+
+    return s;
+}
