@@ -316,6 +316,18 @@ int main(int argc, char *argv[])
         Info().precision(oldPrecision);
     }
 
+    // The three surface models of the curves, in the column order
+    const wordList modelNames(solidBridge::surfaceModelNames.sortedToc());
+    PtrList<solidBridge> bridges(modelNames.size());
+    forAll(modelNames, i)
+    {
+        bridges.set
+        (
+            i,
+            new solidBridge(material, solidBridge::surfaceModelNames[modelNames[i]])
+        );
+    }
+
     // Temperatures and curves per powder
     const fileName outDir(runTime.path()/"postProcessing"/"defluidizationMap");
     mkDir(outDir);
@@ -358,7 +370,7 @@ int main(int argc, char *argv[])
         for (const scalar v : vn)
         {
             os  << " Fn(vn=" << v << ")";
-            for (const word& name : solidBridge::surfaceModelNames.sortedToc())
+            for (const word& name : modelNames)
             {
                 os  << " Fsb_" << name << "(vn=" << v << ")";
             }
@@ -384,13 +396,8 @@ int main(int argc, char *argv[])
             {
                 const scalar tc = hertz.contactTime(v);
                 os  << ' ' << hertz.maxNormalForce(v)/weight;
-                for (const word& name : solidBridge::surfaceModelNames.sortedToc())
+                for (const solidBridge& sb : bridges)
                 {
-                    const solidBridge sb
-                    (
-                        material,
-                        solidBridge::surfaceModelNames[name]
-                    );
                     os  << ' ' << sb.force(rp, T, tc)/weight;
                 }
             }
