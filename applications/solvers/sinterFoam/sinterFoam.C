@@ -41,6 +41,7 @@ Description
 #include "pimpleControl.H"
 #include "constrainPressure.H"
 #include "constrainHbyA.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
 #include "basicSinterCloud.H"
 #include "diffusionSmoother.H"
 #include "volumeFractionModel.H"

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "contactMaterial.H"
+
+namespace
+{
+
+Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
+{
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " in " << dict.name()
+            << " must be positive, not " << value << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::contactMaterial::contactMaterial(const dictionary& dict)
+:
+    youngsModulus_(readPositive(dict, "youngsModulus")),
+    realYoungsModulus_
+    (
+        dict.found("realYoungsModulus")
+      ? readPositive(dict, "realYoungsModulus")
+      : youngsModulus_
+    ),
+    poissonsRatio_(dict.get<scalar>("poissonsRatio"))
+{
+    if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword poissonsRatio in " << dict.name()
+            << " must lie in (-1, 0.5), not " << poissonsRatio_
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::contactMaterial::contactMaterial(scalar Y, scalar Y0, scalar nu)
+:
+    youngsModulus_(Y),
+    realYoungsModulus_(Y0),
+    poissonsRatio_(nu)
+{}
+
+
+Foam::scalar Foam::contactMaterial::effectiveModulus
+(
+    const contactMaterial& other
+) const
+{
+    return
+        1.0
+       /(
+            (1 - sqr(poissonsRatio_))/youngsModulus_
+          + (1 - sqr(other.poissonsRatio_))/other.youngsModulus_
+        );
+}
+
+
+Foam::scalar Foam::contactMaterial::effectiveRealModulus
+(
+    const contactMaterial& other
+) const
+{
+    return
+        1.0
+       /(
+            (1 - sqr(poissonsRatio_))/realYoungsModulus_
+          + (1 - sqr(other.poissonsRatio_))/other.realYoungsModulus_
+        );
+}
+
+
+Foam::scalar Foam::contactMaterial::effectiveShearModulus
+(
+    const contactMaterial& other
+) const
+{
+    const scalar nu1 = poissonsRatio_;
+    const scalar nu2 = other.poissonsRatio_;
+    return
+        1.0
+       /(
+            2*(2 - nu1)*(1 + nu1)/youngsModulus_
+          + 2*(2 - nu2)*(1 + nu2)/other.youngsModulus_
+        );
+}
+
+
+Foam::contactProperties::contactProperties
+(
+    const dictionary& dict,
+    const bool restitution
+)
+:
+    restitution_(restitution ? dict.get<scalar>("restitution") : 1),
+    friction_(dict.get<scalar>("friction")),
+    rollingFriction_(dict.lookupOrDefault<scalar>("rollingFriction", 0))
+{
+    if (!(restitution_ > 0 && restitution_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword restitution in " << dict.name()
+            << " must lie in (0, 1], not " << restitution_
+            << exit(FatalIOError);
+    }
+    if (!(friction_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword friction in " << dict.name()
+            << " must not be negative, not " << friction_
+            << exit(FatalIOError);
+    }
+    if (!(rollingFriction_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword rollingFriction in " << dict.name()
+            << " must not be negative, not " << rollingFriction_
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::contactProperties::contactProperties(scalar e, scalar mu, scalar muR)
+:
+    restitution_(e),
+    friction_(mu),
+    rollingFriction_(muR)
+{}

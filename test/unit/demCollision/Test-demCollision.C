@@ -1,0 +1,492 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    Test-demCollision
+
+Description
+    The DEM engine (libsinterDEM) against analytic collisions. Particles:
+    glass of thesis Tables 4.1-4.2, d = 1 mm, rho = 2500 kg/m^3, DEM modulus
+    Y = 5 MPa, nu = 0.22; wall Y = 5 MPa, nu = 0.34. Step: 1/237 of the
+    collision time (the contact time is resolved to that step). Each check states its tolerance.
+
+    -case headOn      two equal spheres, approach velocity 1 m/s:
+        Hertz-Mindlin, e = 1: rebound/approach = 1 within 2 %, contact time
+            within 2 % of eq 2.11 / 5.12 (HertzCollision, elastic);
+        Hertz-Mindlin, e = 0.9 and 0.5: restitution within 2 % of e;
+        linear (Table 4.1: k_n 7000 N/m, gamma_n 0.00131 kg/s): restitution
+            and contact time within 2 % of exp(-z t_c), pi/sqrt(w0^2 - z^2).
+    -case wall        the same against a wall face (partner of infinite
+        mass: r* = r, m* = m).
+    -case oblique     sphere on a wall at 0.5 m/s normal and v_t = 2 and
+        4 m/s (gross sliding through the whole contact, mu = 0.1, e = 0.9):
+        rebound tangential velocity v_t - mu (1 + e) v_n and spin
+        5/2 mu (1 + e) v_n/r (rigid-body impulse theory) within 1 %.
+    -case settledBed  384 spheres (r 0.9-1.0 x 0.5 mm) dropped in a box
+        settle for 0.5 s under gravity; the floor's normal force equals the
+        bed's weight within 0.5 % (frictionless walls, particle friction
+        0.5, e = 0.5).
+
+    -case badInput -bad unknownLaw|poissonsRatio|restitution|negativeModulus
+        one bad entry must stop construction with a FatalIOError naming
+        the keyword (CTest matches the message).
+
+    Failure is a FatalError, so the test's exit status shows it.
+*/
+
+#include "argList.H"
+#include "IStringStream.H"
+#include "demEngine.H"
+#include "HertzCollision.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam;
+
+namespace
+{
+
+bool ok = true;
+
+void check
+(
+    const word& what,
+    const scalar value,
+    const scalar reference,
+    const scalar tolerance
+)
+{
+    const scalar rel = mag(value - reference)/mag(reference);
+    const bool pass = rel <= tolerance;
+    Info<< (pass ? "ok   " : "FAIL ") << what << ": " << value
+        << " (expected " << reference << ", relative difference " << rel
+        << ", tolerance " << tolerance << ")" << nl;
+    ok = ok && pass;
+}
+
+const scalar rho = 2500;
+const scalar r = 0.5e-3;
+const scalar Yp = 5e6;
+const scalar nup = 0.22;
+const scalar Yw = 5e6;
+const scalar nuw = 0.34;
+
+
+dictionary settings
+(
+    const word& law,
+    const scalar e,
+    const scalar mu,
+    const scalar muR = 0,
+    const scalar muWall = -1
+)
+{
+    OStringStream os;
+    os  << "contactLaw " << law << ";"
+        << "particle { youngsModulus " << Yp << "; realYoungsModulus 60e9;"
+        << " poissonsRatio " << nup << "; }"
+        << "wall { youngsModulus " << Yw << "; realYoungsModulus 69e9;"
+        << " poissonsRatio " << nuw << "; }"
+        << "particleParticle { restitution " << e << "; friction " << mu
+        << "; rollingFriction " << muR << "; }"
+        << "particleWall { restitution " << e << "; friction "
+        << (muWall < 0 ? mu : muWall)
+        << "; rollingFriction " << muR << "; }"
+        << "linearSpringDashpotCoeffs { kn 7000; kt 2250; gammaN 0.00131;"
+        << " gammaT 0.0137; }";
+    IStringStream is(os.str());
+    return dictionary(is);
+}
+
+
+//- A square wall face at height z, normal -z (out of the domain above it)
+demWalls floor(const scalar halfWidth, const scalar z = 0)
+{
+    pointField pts
+    ({
+        point(-halfWidth, -halfWidth, z),
+        point(-halfWidth, halfWidth, z),
+        point(halfWidth, halfWidth, z),
+        point(halfWidth, -halfWidth, z)
+    });
+    faceList faces(1, face(labelList({0, 1, 2, 3})));
+    return demWalls(pts, faces);
+}
+
+
+struct collisionResult
+{
+    scalar restitution;
+    scalar contactTime;
+    vector velocity;
+    vector angularVelocity;
+};
+
+
+//- Time at which the gap closes and opens again, linearly interpolated
+//  between steps; checks on the way that the contact history's duration
+//  is the number of steps in contact times dt
+class contactClock
+{
+    scalar t_ = 0;
+    scalar gap_ = GREAT;
+    scalar start_ = -1;
+    scalar end_ = -1;
+
+public:
+
+    void advance(const scalar dt, const scalar gap)
+    {
+        const scalar t0 = t_;
+        t_ += dt;
+        if (gap_ > 0 && gap <= 0 && start_ < 0)
+        {
+            start_ = t0 + dt*gap_/(gap_ - gap);
+        }
+        if (gap_ <= 0 && gap > 0 && start_ >= 0 && end_ < 0)
+        {
+            end_ = t0 + dt*gap_/(gap_ - gap);
+        }
+        gap_ = gap;
+    }
+
+    bool ended() const { return end_ >= 0; }
+    scalar duration() const { return end_ - start_; }
+};
+
+
+//- Head-on collision of two equal spheres at approach velocity v
+collisionResult headOn(demEngine& dem, const scalar v, const scalar dt)
+{
+    demParticles& P = dem.particles();
+    P.clear();
+    const scalar gap = 0.01*r;
+    P.append(point(-r - gap, 0, 0), vector(0.5*v, 0, 0), Zero, r, rho, 0);
+    P.append(point(r + gap, 0, 0), vector(-0.5*v, 0, 0), Zero, r, rho, 1);
+    dem.initialise();
+
+    const demParticles& Q = dem.particles();
+    contactClock clock;
+    scalar history = 0;
+    label steps = 0;
+    for (label step = 0; step < 100000 && !clock.ended(); ++step)
+    {
+        dem.step(dt);
+        clock.advance(dt, mag(Q.position[1] - Q.position[0]) - 2*r);
+        if (dem.nPairContacts())
+        {
+            history = dem.pairs()[0].history.duration;
+            ++steps;
+        }
+    }
+    check("  history duration = steps in contact x dt", history, steps*dt, 1e-12);
+
+    return
+    {
+        (Q.velocity[1].x() - Q.velocity[0].x())/v,
+        clock.duration(),
+        Q.velocity[0],
+        Q.angularVelocity[0]
+    };
+}
+
+
+//- A sphere hitting the floor z = 0 with velocity U
+collisionResult onWall(demEngine& dem, const vector& U, const scalar dt)
+{
+    dem.setWalls(floor(100*r));
+    demParticles& P = dem.particles();
+    P.clear();
+    P.append(point(0, 0, 1.01*r), U, Zero, r, rho, 0);
+    dem.initialise();
+
+    const demParticles& Q = dem.particles();
+    contactClock clock;
+    scalar history = 0;
+    label steps = 0;
+    for (label step = 0; step < 100000 && !clock.ended(); ++step)
+    {
+        dem.step(dt);
+        clock.advance(dt, Q.position[0].z() - r);
+        if (dem.nWallContacts())
+        {
+            history = dem.wallContacts()[0].history.duration;
+            ++steps;
+        }
+    }
+    check("  history duration = steps in contact x dt", history, steps*dt, 1e-12);
+
+    return
+    {
+        -Q.velocity[0].z()/U.z(),
+        clock.duration(),
+        Q.velocity[0],
+        Q.angularVelocity[0]
+    };
+}
+
+
+scalar mass()
+{
+    return rho*4.0/3.0*constant::mathematical::pi*Foam::pow3(r);
+}
+
+
+void linearAnalytic(const scalar mStar, scalar& e, scalar& tc)
+{
+    const scalar w02 = 7000/mStar;
+    const scalar z = 0.00131/(2*mStar);
+    tc = constant::mathematical::pi/Foam::sqrt(w02 - sqr(z));
+    e = Foam::exp(-z*tc);
+}
+
+
+void caseHeadOn()
+{
+    const scalar m = mass();
+    const HertzCollision hertz(r, m, Yp, nup);
+    const scalar v = 1;
+    const scalar tc = hertz.contactTime(v);
+    const scalar dt = tc/237;
+
+    {
+        demEngine dem(settings("HertzMindlin", 1, 0.5), 1);
+        const collisionResult res = headOn(dem, v, dt);
+        check("HertzMindlin e=1 restitution", res.restitution, 1, 0.02);
+        check("HertzMindlin e=1 contact time vs eq 5.12", res.contactTime, tc, 0.02);
+    }
+    for (const scalar e : {0.9, 0.5})
+    {
+        demEngine dem(settings("HertzMindlin", e, 0.5), 1);
+        const collisionResult res = headOn(dem, v, dt);
+        check("HertzMindlin e=" + name(e) + " restitution", res.restitution, e, 0.02);
+        Info<< "     contact time / eq 5.12 (elastic): " << res.contactTime/tc << nl;
+    }
+    {
+        scalar e, tcLin;
+        linearAnalytic(0.5*m, e, tcLin);
+        demEngine dem(settings("linearSpringDashpot", 1, 0.5), 1);
+        const collisionResult res = headOn(dem, v, tcLin/237);
+        check("linear restitution", res.restitution, e, 0.02);
+        check("linear contact time", res.contactTime, tcLin, 0.02);
+    }
+}
+
+
+void caseWall()
+{
+    const scalar m = mass();
+    const scalar v = 1;
+
+    // Wall: r* = r, m* = m, Y* from particle and wall
+    const scalar YStar =
+        1/((1 - sqr(nup))/Yp + (1 - sqr(nuw))/Yw);
+    const scalar tc = 2.868*Foam::pow(sqr(m)/(r*sqr(YStar)*v), 0.2);
+    const scalar dt = tc/237;
+
+    {
+        demEngine dem(settings("HertzMindlin", 1, 0.5), 1);
+        const collisionResult res = onWall(dem, vector(0, 0, -v), dt);
+        check("wall HertzMindlin e=1 restitution", res.restitution, 1, 0.02);
+        check("wall HertzMindlin e=1 contact time vs eq 5.12", res.contactTime, tc, 0.02);
+    }
+    for (const scalar e : {0.9, 0.5})
+    {
+        demEngine dem(settings("HertzMindlin", e, 0.5), 1);
+        const collisionResult res = onWall(dem, vector(0, 0, -v), dt);
+        check("wall HertzMindlin e=" + name(e) + " restitution", res.restitution, e, 0.02);
+    }
+    {
+        scalar e, tcLin;
+        linearAnalytic(m, e, tcLin);
+        demEngine dem(settings("linearSpringDashpot", 1, 0.5), 1);
+        const collisionResult res = onWall(dem, vector(0, 0, -v), tcLin/237);
+        check("wall linear restitution", res.restitution, e, 0.02);
+        check("wall linear contact time", res.contactTime, tcLin, 0.02);
+    }
+}
+
+
+void caseOblique()
+{
+    const scalar m = mass();
+    const HertzCollision hertz(r, m, Yp, nup);
+    const scalar vn = 0.5;
+    const scalar dt = hertz.contactTime(vn)/400;
+    const scalar e = 0.9;
+    const scalar mu = 0.1;
+
+    for (const scalar vt : {2.0, 4.0})
+    {
+        demEngine dem(settings("HertzMindlin", e, mu), 1);
+        const collisionResult res = onWall(dem, vector(vt, 0, -vn), dt);
+        check
+        (
+            "sliding impact v_t=" + name(vt) + " rebound tangential velocity",
+            res.velocity.x(), vt - mu*(1 + e)*vn, 0.01
+        );
+        check
+        (
+            "sliding impact v_t=" + name(vt) + " spin",
+            res.angularVelocity.y(), 2.5*mu*(1 + e)*vn/r, 0.01
+        );
+    }
+}
+
+
+void caseSettledBed()
+{
+    const scalar g = 9.81;
+    const label nSide = 8;
+    const scalar half = nSide*r*1.05;
+
+    // Floor (face 0) and four side walls, normals out of the box
+    const scalar H = 40*r;
+    pointField pts
+    ({
+        point(-half, -half, 0), point(half, -half, 0),
+        point(half, half, 0), point(-half, half, 0),
+        point(-half, -half, H), point(half, -half, H),
+        point(half, half, H), point(-half, half, H)
+    });
+    faceList faces
+    ({
+        face(labelList({0, 3, 2, 1})),
+        face(labelList({0, 1, 5, 4})),
+        face(labelList({1, 2, 6, 5})),
+        face(labelList({2, 3, 7, 6})),
+        face(labelList({3, 0, 4, 7}))
+    });
+
+    // Frictionless walls, so that the side walls cannot carry weight
+    demEngine dem(settings("HertzMindlin", 0.5, 0.5, 0, 0), 1);
+    dem.setWalls(demWalls(pts, faces));
+
+    demParticles& P = dem.particles();
+    P.clear();
+    label id = 0;
+    scalar weight = 0;
+    for (label k = 0; k < 6; ++k)
+    {
+        for (label j = 0; j < nSide; ++j)
+        {
+            for (label i = 0; i < nSide; ++i)
+            {
+                // Slightly staggered lattice, a little under r apart
+                const scalar ri = r*(0.9 + 0.1*((i + 2*j + 3*k) % 3)/2);
+                const point x
+                (
+                    -half + r*1.05*(2*i + 1) + 0.05*r*(k % 2),
+                    -half + r*1.05*(2*j + 1) - 0.05*r*(k % 2),
+                    r*1.1*(2*k + 1)
+                );
+                const label p = P.append(x, Zero, Zero, ri, rho, id++);
+                P.externalForce[p] = vector(0, 0, -g*P.mass[p]);
+                weight += g*P.mass[p];
+            }
+        }
+    }
+
+    const HertzCollision hertz(r, mass(), Yp, nup);
+    const scalar dt = hertz.contactTime(0.1)/50;
+    dem.initialise();
+
+    // Settle for 0.5 s
+    const label nSteps = label(0.5/dt);
+    for (label step = 0; step < nSteps; ++step)
+    {
+        dem.step(dt);
+    }
+
+    scalar floorForce = 0;
+    scalar kinetic = 0;
+    for (const wallContact& c : dem.wallContacts())
+    {
+        if (c.face == 0)
+        {
+            floorForce += c.force.z();
+        }
+    }
+    forAll(P.mass, i)
+    {
+        kinetic += 0.5*P.mass[i]*magSqr(P.velocity[i]);
+    }
+    Info<< "     " << P.size() << " particles, " << dem.nPairContacts()
+        << " pair contacts, " << dem.nWallContacts() << " wall contacts, "
+        << "kinetic energy " << kinetic << " J after " << nSteps
+        << " steps (" << dem.nBuilds() << " list builds)" << nl;
+    check("settled bed floor force vs weight", floorForce, weight, 0.005);
+}
+
+
+//- Construct the engine from settings with one bad entry: must be fatal
+void caseBadInput(const word& what)
+{
+    dictionary dict(settings("HertzMindlin", 0.9, 0.5));
+    if (what == "unknownLaw")
+    {
+        dict.set("contactLaw", word("Hooke"));
+    }
+    else if (what == "poissonsRatio")
+    {
+        dict.subDict("particle").set("poissonsRatio", 0.6);
+    }
+    else if (what == "restitution")
+    {
+        dict.subDict("particleWall").set("restitution", 1.2);
+    }
+    else if (what == "negativeModulus")
+    {
+        dict.subDict("wall").set("youngsModulus", -5e6);
+    }
+    else
+    {
+        FatalErrorInFunction << "Unknown -bad " << what << exit(FatalError);
+    }
+    demEngine dem(dict, 1);
+    FatalErrorInFunction
+        << "bad input " << what << " was accepted" << exit(FatalError);
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("DEM engine against analytic collisions");
+    argList::noParallel();
+    argList::noCheckProcessorDirectories();
+    argList::addOption
+    (
+        "case", "name", "headOn|wall|oblique|settledBed|badInput"
+    );
+    argList::addOption
+    (
+        "bad", "entry",
+        "with -case badInput: unknownLaw|poissonsRatio|restitution"
+        "|negativeModulus"
+    );
+    argList args(argc, argv);
+
+    const word which(args.get<word>("case"));
+
+    if (which == "headOn") caseHeadOn();
+    else if (which == "wall") caseWall();
+    else if (which == "oblique") caseOblique();
+    else if (which == "settledBed") caseSettledBed();
+    else if (which == "badInput") caseBadInput(args.get<word>("bad"));
+    else
+    {
+        FatalErrorInFunction
+            << "Unknown -case " << which
+            << ". Valid: headOn wall oblique settledBed" << exit(FatalError);
+    }
+
+    if (!ok)
+    {
+        FatalErrorInFunction << "Test-demCollision -case " << which
+            << " failed" << exit(FatalError);
+    }
+
+    Info<< "End" << nl;
+    return 0;
+}
