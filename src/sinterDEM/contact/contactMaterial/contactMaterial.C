@@ -50,17 +50,32 @@ Foam::contactMaterial::contactMaterial(scalar Y, scalar Y0, scalar nu)
 {}
 
 
+namespace
+{
+
+//- 1/Y* = (1 - nu_1^2)/Y_1 + (1 - nu_2^2)/Y_2
+Foam::scalar combinedModulus
+(
+    const Foam::scalar Y1, const Foam::scalar nu1,
+    const Foam::scalar Y2, const Foam::scalar nu2
+)
+{
+    return 1.0/((1 - Foam::sqr(nu1))/Y1 + (1 - Foam::sqr(nu2))/Y2);
+}
+
+} // End anonymous namespace
+
+
 Foam::scalar Foam::contactMaterial::effectiveModulus
 (
     const contactMaterial& other
 ) const
 {
-    return
-        1.0
-       /(
-            (1 - sqr(poissonsRatio_))/youngsModulus_
-          + (1 - sqr(other.poissonsRatio_))/other.youngsModulus_
-        );
+    return combinedModulus
+    (
+        youngsModulus_, poissonsRatio_,
+        other.youngsModulus_, other.poissonsRatio_
+    );
 }
 
 
@@ -69,12 +84,11 @@ Foam::scalar Foam::contactMaterial::effectiveRealModulus
     const contactMaterial& other
 ) const
 {
-    return
-        1.0
-       /(
-            (1 - sqr(poissonsRatio_))/realYoungsModulus_
-          + (1 - sqr(other.poissonsRatio_))/other.realYoungsModulus_
-        );
+    return combinedModulus
+    (
+        realYoungsModulus_, poissonsRatio_,
+        other.realYoungsModulus_, other.poissonsRatio_
+    );
 }
 
 
