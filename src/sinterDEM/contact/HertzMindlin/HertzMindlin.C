@@ -92,7 +92,7 @@ Foam::contactLaws::HertzMindlin::HertzMindlin
     const scalar coarseGrainFactor
 )
 :
-    contactLaw(dict, coarseGrainFactor, true),
+    contactLawTemplate<HertzMindlin>(dict, coarseGrainFactor, true),
     YStarPP_(particle_.effectiveModulus(particle_)),
     GStarPP_(particle_.effectiveShearModulus(particle_)),
     YStarPW_(particle_.effectiveModulus(wall_)),
@@ -100,28 +100,6 @@ Foam::contactLaws::HertzMindlin::HertzMindlin
     alphaPP_(dampingFactor(particleParticle_.restitution())),
     alphaPW_(dampingFactor(particleWall_.restitution()))
 {}
-
-
-void Foam::contactLaws::HertzMindlin::pairForces
-(
-    demParticles& particles,
-    UList<contactPair>& pairs,
-    const scalar deltaT
-) const
-{
-    contactKernels::pairLoop(*this, particleParticle_, particles, pairs, deltaT);
-}
-
-
-void Foam::contactLaws::HertzMindlin::wallForces
-(
-    demParticles& particles,
-    UList<wallContact>& contacts,
-    const scalar deltaT
-) const
-{
-    contactKernels::wallLoop(*this, particleWall_, particles, contacts, deltaT);
-}
 
 
 Foam::scalar Foam::contactLaws::HertzMindlin::collisionTime

@@ -45,7 +45,7 @@ Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
     const scalar coarseGrainFactor
 )
 :
-    contactLaw(dict, coarseGrainFactor, false)
+    contactLawTemplate<linearSpringDashpot>(dict, coarseGrainFactor, false)
 {
     const dictionary& coeffs = dict.subDict(typeName + "Coeffs");
     const scalar K = coarseGrainFactor;
@@ -53,28 +53,6 @@ Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
     kt_ = K*readNonNegative(coeffs, "kt", false);
     gammaN_ = sqr(K)*readNonNegative(coeffs, "gammaN", false);
     gammaT_ = sqr(K)*readNonNegative(coeffs, "gammaT", false);
-}
-
-
-void Foam::contactLaws::linearSpringDashpot::pairForces
-(
-    demParticles& particles,
-    UList<contactPair>& pairs,
-    const scalar deltaT
-) const
-{
-    contactKernels::pairLoop(*this, particleParticle_, particles, pairs, deltaT);
-}
-
-
-void Foam::contactLaws::linearSpringDashpot::wallForces
-(
-    demParticles& particles,
-    UList<wallContact>& contacts,
-    const scalar deltaT
-) const
-{
-    contactKernels::wallLoop(*this, particleWall_, particles, contacts, deltaT);
 }
 
 
