@@ -13,6 +13,7 @@ Foam::demEngine::demEngine
     skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
     skin_(0),
     listsValid_(false),
+    historyPending_(false),
     nBuilds_(0)
 {
     if (!(skinFraction_ > 0))
@@ -32,6 +33,20 @@ void Foam::demEngine::setWalls(const demWalls& walls)
 }
 
 
+void Foam::demEngine::restoreHistory
+(
+    const UList<contactPair>& pairs,
+    const UList<wallContactRecord>& walls
+)
+{
+    pairs_ = pairs;
+    wallContacts_.clear();
+    pendingWall_ = walls;
+    historyPending_ = true;
+    listsValid_ = false;
+}
+
+
 void Foam::demEngine::buildLists()
 {
     const demParticles& P = particles_;
@@ -45,8 +60,9 @@ void Foam::demEngine::buildLists()
     skin_ = skinFraction_*2*rMax;
 
     // Old pair histories, indexed by their first particle
+    const bool keep = listsValid_ || historyPending_;
     labelList start(n + 1, 0);
-    if (listsValid_)
+    if (keep)
     {
         for (const contactPair& c : pairs_)
         {
@@ -60,7 +76,7 @@ void Foam::demEngine::buildLists()
     List<contactPair> old(start[n]);
     {
         labelList fill(SubList<label>(start, n));
-        if (listsValid_)
+        if (keep)
         {
             for (const contactPair& c : pairs_)
             {
@@ -115,6 +131,49 @@ void Foam::demEngine::buildLists()
                 break;
             }
         }
+    }
+
+    // Wall histories given by face centre
+    if (historyPending_)
+    {
+        labelList pendStart(n + 1, 0);
+        for (const wallContactRecord& r : pendingWall_)
+        {
+            ++pendStart[r.i + 1];
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            pendStart[i + 1] += pendStart[i];
+        }
+        List<const wallContactRecord*> pend(pendingWall_.size());
+        {
+            labelList fill(SubList<label>(pendStart, n));
+            for (const wallContactRecord& r : pendingWall_)
+            {
+                pend[fill[r.i]++] = &r;
+            }
+        }
+
+        const scalar tol2 = sqr(1e-6*skin_);
+        for (wallContact& c : wallContacts_)
+        {
+            if (pendStart[c.i] == pendStart[c.i + 1])
+            {
+                continue;
+            }
+            const point centre = walls_.centre(c.face);
+            for (label k = pendStart[c.i]; k < pendStart[c.i + 1]; ++k)
+            {
+                if (magSqr(pend[k]->faceCentre - centre) < tol2)
+                {
+                    c.history = pend[k]->history;
+                    break;
+                }
+            }
+        }
+
+        pendingWall_.clear();
+        historyPending_ = false;
     }
 
     builtAt_ = P.position;

@@ -18,6 +18,7 @@
 #include "BeetstraDragForce.H"
 #include "GasPressureGradientForce.H"
 #include "WeightForce.H"
+#include "DEMCollision.H"
 
 // OpenFOAM's stock families
 makeParcelCloudFunctionObjects(basicSinterCloud);
@@ -34,3 +35,6 @@ makeParcelHeatTransferModels(basicSinterCloud);
 makeParticleForceModelType(BeetstraDragForce, basicSinterCloud);
 makeParticleForceModelType(GasPressureGradientForce, basicSinterCloud);
 makeParticleForceModelType(WeightForce, basicSinterCloud);
+
+// sinterFoam's DEM engine
+makeCollisionModelType(DEMCollision, basicSinterCloud);

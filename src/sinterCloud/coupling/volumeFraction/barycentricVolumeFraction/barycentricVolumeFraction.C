@@ -106,3 +106,57 @@ Foam::volumeFractionModels::barycentricVolumeFraction::theta
 
     return tTheta;
 }
+
+
+Foam::tmp<Foam::vectorField>
+Foam::volumeFractionModels::barycentricVolumeFraction::pointValues
+(
+    const vectorField& cellValues
+) const
+{
+    // The transpose of theta()'s point step: each point averages the cells
+    // around it (on every processor) by volume
+    const scalarField& V = mesh_.V();
+    const labelListList& pointCells = mesh_.pointCells();
+
+    auto tValues = tmp<vectorField>::New(mesh_.nPoints(), Zero);
+    vectorField& values = tValues.ref();
+
+    forAll(pointCells, pointi)
+    {
+        for (const label celli : pointCells[pointi])
+        {
+            values[pointi] += V[celli]*cellValues[celli];
+        }
+    }
+
+    syncTools::syncPointList
+    (
+        mesh_,
+        values,
+        plusEqOp<vector>(),
+        vector::zero
+    );
+
+    values /= pointCellVolume_;
+
+    return tValues;
+}
+
+
+Foam::vector Foam::volumeFractionModels::barycentricVolumeFraction::gather
+(
+    const particle& p,
+    const vectorField& cellValues,
+    const vectorField& pointValues
+) const
+{
+    const barycentric& b = p.coordinates();
+    const triFace tri(p.currentTetIndices().faceTriIs(mesh_));
+
+    return
+        b[0]*cellValues[p.cell()]
+      + b[1]*pointValues[tri[0]]
+      + b[2]*pointValues[tri[1]]
+      + b[3]*pointValues[tri[2]];
+}

@@ -48,3 +48,14 @@ Foam::volumeFractionModels::cellVolumeFraction::theta
 
     return tTheta;
 }
+
+
+Foam::vector Foam::volumeFractionModels::cellVolumeFraction::gather
+(
+    const particle& p,
+    const vectorField& cellValues,
+    const vectorField&
+) const
+{
+    return cellValues[p.cell()];
+}

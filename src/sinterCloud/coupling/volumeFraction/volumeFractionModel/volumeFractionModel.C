@@ -65,3 +65,12 @@ Foam::tmp<Foam::scalarField> Foam::volumeFractionModel::theta
 
     return theta(parcels, solidVolume);
 }
+
+
+Foam::tmp<Foam::vectorField> Foam::volumeFractionModel::pointValues
+(
+    const vectorField& cellValues
+) const
+{
+    return tmp<vectorField>::New();
+}

@@ -3,6 +3,30 @@
 
 #include "GasPressureGradientForce.H"
 #include "fvcGrad.H"
+#include "IOdictionary.H"
+
+
+template<class CloudType>
+void Foam::GasPressureGradientForce<CloudType>::readCoupling()
+{
+    const fvMesh& mesh = this->mesh();
+    const word dictName("couplingProperties");
+
+    if (!mesh.template foundObject<IOdictionary>(dictName))
+    {
+        FatalErrorInFunction
+            << "The " << typeName << " force gathers grad(p) with the "
+            << "voidage's operators, read from constant/" << dictName
+            << ", which the solver has not read"
+            << exit(FatalError);
+    }
+
+    const IOdictionary& dict =
+        mesh.template lookupObject<IOdictionary>(dictName);
+
+    volumeFraction_ = volumeFractionModel::New(mesh, dict);
+    smoother_.reset(new diffusionSmoother(mesh, dict));
+}
 
 template<class CloudType>
 Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
@@ -15,7 +39,9 @@ Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
     // Coefficients optional: `gasPressureGradient;` or with a dictionary
     ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
     pName_(dict.template lookupOrDefault<word>("p", "p"))
-{}
+{
+    readCoupling();
+}
 
 
 template<class CloudType>
@@ -26,7 +52,9 @@ Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
 :
     ParticleForce<CloudType>(f),
     pName_(f.pName_)
-{}
+{
+    readCoupling();
+}
 
 
 template<class CloudType>
@@ -37,17 +65,18 @@ void Foam::GasPressureGradientForce<CloudType>::cacheFields(const bool store)
         const volScalarField& p =
             this->mesh().template lookupObject<volScalarField>(pName_);
 
-        gradp_.reset(new volVectorField("gasPressureGradient", fvc::grad(p)));
-        gradpInterp_ = interpolation<vector>::New
-        (
-            this->owner().solution().interpolationSchemes(),
-            gradp_()
-        );
+        gradpCells_ =
+            smoother_->smooth<vector>
+            (
+                fvc::grad(p)().primitiveField(),
+                "gasPressureGradient"
+            );
+        gradpPoints_ = volumeFraction_->pointValues(gradpCells_);
     }
     else
     {
-        gradpInterp_.clear();
-        gradp_.clear();
+        gradpCells_.clear();
+        gradpPoints_.clear();
     }
 }
 
@@ -63,8 +92,7 @@ Foam::forceSuSp Foam::GasPressureGradientForce<CloudType>::calcNonCoupled
     const scalar muc
 ) const
 {
-    const vector gradp =
-        gradpInterp_->interpolate(p.coordinates(), p.currentTetIndices());
+    const vector gradp = volumeFraction_->gather(p, gradpCells_, gradpPoints_);
 
     return forceSuSp(-p.volume()*gradp, 0);
 }

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "DEMCollision.H"
+#include "coarseGrainFactor.H"
+#include "wallPolyPatch.H"
+
+template<class CloudType>
+Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
+{
+    const polyMesh& mesh = this->owner().mesh();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const dictionary& dict = this->coeffDict();
+
+    labelHashSet ids;
+    if (dict.found("walls"))
+    {
+        const wordRes names(dict.get<wordRes>("walls"));
+        ids = patches.patchSet(names);
+        if (ids.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword walls in " << dict.name() << " matches no patch."
+                << " Valid patches are " << patches.names()
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        forAll(patches, patchi)
+        {
+            if (isA<wallPolyPatch>(patches[patchi]))
+            {
+                ids.insert(patchi);
+            }
+        }
+    }
+
+    DynamicList<face> faces;
+    for (const label patchi : ids.sortedToc())
+    {
+        const polyPatch& pp = patches[patchi];
+        forAll(pp, i)
+        {
+            faces.append(pp[i]);
+        }
+    }
+
+    return demWalls(mesh.points(), faceList(std::move(faces)));
+}
+
+
+template<class CloudType>
+Foam::DEMCollision<CloudType>::DEMCollision
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    CollisionModel<CloudType>(dict, owner, typeName),
+    engine_
+    (
+        this->coeffDict(),
+        coarseGrainFactor(owner.constProps().dict())
+    ),
+    deltaT_(this->coeffDict().template lookupOrDefault<scalar>("deltaT", 0)),
+    fraction_
+    (
+        this->coeffDict().template lookupOrDefault<scalar>
+        (
+            "collisionTimeFraction",
+            0
+        )
+    ),
+    impactVelocity_
+    (
+        this->coeffDict().template lookupOrDefault<scalar>("impactVelocity", 1)
+    )
+{
+    const dictionary& coeffs = this->coeffDict();
+    const bool hasStep = coeffs.found("deltaT");
+    const bool hasFraction = coeffs.found("collisionTimeFraction");
+
+    if (hasStep == hasFraction)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Give exactly one of deltaT [s] and collisionTimeFraction"
+            << " in " << coeffs.name()
+            << exit(FatalIOError);
+    }
+    if (hasStep && !(deltaT_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword deltaT in " << coeffs.name()
+            << " must be positive, not " << deltaT_
+            << exit(FatalIOError);
+    }
+    if
+    (
+        hasFraction
+     && !(fraction_ > 0 && fraction_ <= maxCollisionTimeFraction)
+    )
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword collisionTimeFraction in " << coeffs.name()
+            << " must lie in (0, " << maxCollisionTimeFraction
+            << "], not " << fraction_
+            << exit(FatalIOError);
+    }
+    if (!(impactVelocity_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword impactVelocity in " << coeffs.name()
+            << " must be positive [m/s], not " << impactVelocity_
+            << exit(FatalIOError);
+    }
+
+    if (Pstream::parRun())
+    {
+        // Contacts across processor boundaries need the halo exchange,
+        // which is not there yet: refuse rather than miss those contacts
+        FatalIOErrorInFunction(coeffs)
+            << typeName << " runs serial only in this version (no halo"
+            << " exchange across processors yet). Run without -parallel,"
+            << " or select collisionModel pairCollision"
+            << exit(FatalIOError);
+    }
+
+    engine_.setWalls(meshWalls());
+}
+
+
+template<class CloudType>
+Foam::DEMCollision<CloudType>::DEMCollision(const DEMCollision<CloudType>& cm)
+:
+    DEMCollision<CloudType>(cm.dict(), const_cast<CloudType&>(cm.owner()))
+{}
+
+
+template<class CloudType>
+void Foam::DEMCollision<CloudType>::collide()
+{
+    FatalErrorInFunction
+        << typeName << " needs the DEMCloud layer of the cloud"
+        << exit(FatalError);
+}
+
+
+template<class CloudType>
+Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
+{
+    const demParticles& P = engine_.particles();
+
+    // The smallest parcel has the shortest contact
+    scalar rMin = GREAT;
+    scalar mMin = GREAT;
+    forAll(P.radius, i)
+    {
+        rMin = min(rMin, P.radius[i]);
+        mMin = min(mMin, P.mass[i]);
+    }
+    reduce(rMin, minOp<scalar>());
+    reduce(mMin, minOp<scalar>());
+
+    if (rMin == GREAT)
+    {
+        return 1;
+    }
+
+    const scalar tc = engine_.law().collisionTime(rMin, mMin, impactVelocity_);
+    const scalar step = deltaT_ > 0 ? deltaT_ : fraction_*tc;
+
+    if (step > maxCollisionTimeFraction*tc*(1 + 1e-12))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Keyword deltaT " << step << " s in "
+            << this->coeffDict().name() << " is larger than "
+            << maxCollisionTimeFraction << " of the collision time "
+            << tc << " s of the smallest parcel (radius " << rMin
+            << " m, mass " << mMin << " kg) at impactVelocity "
+            << impactVelocity_ << " m/s"
+            << exit(FatalIOError);
+    }
+
+    return max(label(1), label(std::ceil(dt/step*(1 - 1e-12))));
+}
