@@ -13,7 +13,7 @@ Foam::demEngine::demEngine
     skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
     skin_(0),
     listsValid_(false),
-    historyPending_(false),
+    nLocal_(-1),
     nBuilds_(0)
 {
     if (!(skinFraction_ > 0))
@@ -33,17 +33,81 @@ void Foam::demEngine::setWalls(const demWalls& walls)
 }
 
 
+void Foam::demEngine::setHalo(autoPtr<demHalo>&& halo)
+{
+    halo_ = std::move(halo);
+    listsValid_ = false;
+}
+
+
+Foam::scalar Foam::demEngine::maxRadius() const
+{
+    scalar rMax = 0;
+    for (const scalar r : particles_.radius)
+    {
+        rMax = max(rMax, r);
+    }
+    if (halo_.valid())
+    {
+        reduce(rMax, maxOp<scalar>());
+    }
+    return rMax;
+}
+
+
+void Foam::demEngine::exchange()
+{
+    nLocal_ = particles_.size();
+    if (halo_.valid())
+    {
+        const scalar rMax = maxRadius();
+        halo_->select(particles_, nLocal_, 2*rMax*(1 + skinFraction_));
+    }
+    listsValid_ = false;
+}
+
+
 void Foam::demEngine::restoreHistory
 (
     const UList<contactPair>& pairs,
     const UList<wallContactRecord>& walls
 )
 {
-    pairs_ = pairs;
-    wallContacts_.clear();
+    keptPairs_.clear();
+    for (const contactPair& c : pairs)
+    {
+        keptPairs_.append({c.i, particles_.identity[c.j], c.history});
+    }
+    keptWalls_.clear();
     pendingWall_ = walls;
-    historyPending_ = true;
+    pairs_.clear();
+    wallContacts_.clear();
     listsValid_ = false;
+}
+
+
+void Foam::demEngine::keepHistory()
+{
+    keptPairs_.clear();
+    keptWalls_.clear();
+    if (!listsValid_)
+    {
+        return;
+    }
+    for (const contactPair& c : pairs_)
+    {
+        if (c.history.active())
+        {
+            keptPairs_.append({c.i, particles_.identity[c.j], c.history});
+        }
+    }
+    for (const wallContact& c : wallContacts_)
+    {
+        if (c.history.active())
+        {
+            keptWalls_.append(c);
+        }
+    }
 }
 
 
@@ -51,103 +115,114 @@ void Foam::demEngine::buildLists()
 {
     const demParticles& P = particles_;
     const label n = P.size();
+    const label nL = nLocal();
 
-    scalar rMax = 0;
-    forAll(P.radius, i)
-    {
-        rMax = max(rMax, P.radius[i]);
-    }
+    const scalar rMax = maxRadius();
     skin_ = skinFraction_*2*rMax;
 
-    // Old pair histories, indexed by their first particle
-    const bool keep = listsValid_ || historyPending_;
-    labelList start(n + 1, 0);
-    if (keep)
+    // Kept pair histories, indexed by their (local) first particle
+    labelList start(nL + 1, 0);
+    for (const keptPair& c : keptPairs_)
     {
-        for (const contactPair& c : pairs_)
-        {
-            ++start[c.i + 1];
-        }
+        ++start[c.i + 1];
     }
-    for (label i = 0; i < n; ++i)
+    for (label i = 0; i < nL; ++i)
     {
         start[i + 1] += start[i];
     }
-    List<contactPair> old(start[n]);
+    List<const keptPair*> kept(keptPairs_.size());
     {
-        labelList fill(SubList<label>(start, n));
-        if (keep)
+        labelList fill(SubList<label>(start, nL));
+        for (const keptPair& c : keptPairs_)
         {
-            for (const contactPair& c : pairs_)
-            {
-                old[fill[c.i]++] = c;
-            }
+            kept[fill[c.i]++] = &c;
         }
     }
 
+    // New lists; pairs of two ghosts are their owners' business
     pairs_.clear();
     bins_.build(P.position, 2*rMax + skin_);
     bins_.pairs(P, skin_, pairs_);
+    if (nL < n)
+    {
+        label k = 0;
+        forAll(pairs_, p)
+        {
+            if (pairs_[p].i < nL)
+            {
+                pairs_[k++] = pairs_[p];
+            }
+        }
+        pairs_.resize(k);
+    }
 
     for (contactPair& c : pairs_)
     {
+        const label partner = P.identity[c.j];
         for (label k = start[c.i]; k < start[c.i + 1]; ++k)
         {
-            if (old[k].j == c.j)
+            if (kept[k]->partner == partner)
             {
-                c.history = old[k].history;
+                c.history = kept[k]->history;
                 break;
             }
         }
     }
 
-    // Wall contacts: same, keyed by (particle, face)
-    List<wallContact> oldWall;
-    if (listsValid_)
-    {
-        oldWall = wallContacts_;
-    }
-    labelList wallStart(n + 1, 0);
-    for (const wallContact& c : oldWall)
+    // Wall contacts of local particles, history by (particle, face)
+    labelList wallStart(nL + 1, 0);
+    for (const wallContact& c : keptWalls_)
     {
         ++wallStart[c.i + 1];
     }
-    for (label i = 0; i < n; ++i)
+    for (label i = 0; i < nL; ++i)
     {
         wallStart[i + 1] += wallStart[i];
     }
+    // keptWalls_ is grouped by particle in increasing order
 
     wallContacts_.clear();
     walls_.candidates(P, skin_, wallContacts_);
+    if (nL < n)
+    {
+        label k = 0;
+        forAll(wallContacts_, w)
+        {
+            if (wallContacts_[w].i < nL)
+            {
+                wallContacts_[k++] = wallContacts_[w];
+            }
+        }
+        wallContacts_.resize(k);
+    }
 
-    // oldWall is grouped by particle in increasing order already
     for (wallContact& c : wallContacts_)
     {
         for (label k = wallStart[c.i]; k < wallStart[c.i + 1]; ++k)
         {
-            if (oldWall[k].face == c.face)
+            if (keptWalls_[k].face == c.face)
             {
-                c.history = oldWall[k].history;
+                c.history = keptWalls_[k].history;
                 break;
             }
         }
     }
 
     // Wall histories given by face centre
-    if (historyPending_)
+    if (pendingWall_.size())
     {
-        labelList pendStart(n + 1, 0);
+        labelList pendStart(nL + 1, 0);
         for (const wallContactRecord& r : pendingWall_)
         {
             ++pendStart[r.i + 1];
         }
-        for (label i = 0; i < n; ++i)
+        for (label i = 0; i < nL; ++i)
         {
             pendStart[i + 1] += pendStart[i];
         }
         List<const wallContactRecord*> pend(pendingWall_.size());
         {
-            labelList fill(SubList<label>(pendStart, n));
+            labelList fill(SubList<label>(pendStart, nL));
             for (const wallContactRecord& r : pendingWall_)
             {
                 pend[fill[r.i]++] = &r;
@@ -173,8 +248,10 @@ void Foam::demEngine::buildLists()
         }
 
         pendingWall_.clear();
-        historyPending_ = false;
     }
+
+    keptPairs_.clear();
+    keptWalls_.clear();
 
     builtAt_ = P.position;
     listsValid_ = true;
@@ -218,6 +295,10 @@ void Foam::demEngine::computeForces(const scalar deltaT)
 
 void Foam::demEngine::initialise()
 {
+    if (nLocal_ < 0)
+    {
+        exchange();
+    }
     buildLists();
     computeForces(0);
 }
@@ -231,7 +312,7 @@ void Foam::demEngine::step(const scalar deltaT)
     }
 
     demParticles& P = particles_;
-    const label n = P.size();
+    const label nL = nLocal();
     const scalar half = 0.5*deltaT;
 
     vector* __restrict__ x = P.position.data();
@@ -242,34 +323,60 @@ void Foam::demEngine::step(const scalar deltaT)
     const scalar* __restrict__ m = P.mass.cdata();
     const scalar* __restrict__ I = P.inertia.cdata();
 
-    for (label i = 0; i < n; ++i)
+    for (label i = 0; i < nL; ++i)
     {
         v[i] += (half/m[i])*F[i];
         w[i] += (half/I[i])*T[i];
         x[i] += deltaT*v[i];
     }
 
-    if (listsExpired())
+    if (halo_.valid())
     {
+        // Ghosts at the new positions, then a rebuild everywhere if any
+        // processor needs one (the ghosts are chosen again with it)
+        halo_->update(P, nL);
+        if (returnReduce(listsExpired(), orOp<bool>()))
+        {
+            keepHistory();
+            halo_->select(P, nL, 2*maxRadius()*(1 + skinFraction_));
+            buildLists();
+        }
+    }
+    else if (listsExpired())
+    {
+        keepHistory();
         buildLists();
     }
 
     computeForces(deltaT);
 
-    for (label i = 0; i < n; ++i)
+    // Fresh pointers: choosing the ghosts may have reallocated the lists
+    vector* __restrict__ v2 = P.velocity.data();
+    vector* __restrict__ w2 = P.angularVelocity.data();
+    const vector* __restrict__ F2 = P.force.cdata();
+    const vector* __restrict__ T2 = P.torque.cdata();
+    const scalar* __restrict__ m2 = P.mass.cdata();
+    const scalar* __restrict__ I2 = P.inertia.cdata();
+    for (label i = 0; i < nL; ++i)
     {
-        v[i] += (half/m[i])*P.force[i];
-        w[i] += (half/I[i])*P.torque[i];
+        v2[i] += (half/m2[i])*F2[i];
+        w2[i] += (half/I2[i])*T2[i];
     }
 }
 
 
 Foam::label Foam::demEngine::nPairContacts() const
 {
+    const demParticles& P = particles_;
+    const label nL = nLocal();
     label count = 0;
     for (const contactPair& c : pairs_)
     {
-        if (c.history.active())
+        if
+        (
+            c.history.active()
+         && (c.j < nL || P.identity[c.i] < P.identity[c.j])
+        )
         {
             ++count;
         }

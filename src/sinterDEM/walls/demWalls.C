@@ -8,7 +8,12 @@ Foam::demWalls::demWalls(const pointField& points, const faceList& faces)
     points_(points),
     faces_(faces),
     normals_(faces.size()),
-    boxes_(faces.size())
+    boxes_(faces.size()),
+    binnedRange_(-1),
+    binWidth_(0),
+    nx_(0),
+    ny_(0),
+    nz_(0)
 {
     forAll(faces_, f)
     {
@@ -69,6 +74,76 @@ Foam::point Foam::demWalls::closestPoint
 }
 
 
+void Foam::demWalls::buildBins(const scalar range) const
+{
+    binnedRange_ = range;
+
+    binBox_ = boundBox::invertedBox;
+    for (const boundBox& bb : boxes_)
+    {
+        binBox_.add(bb);
+    }
+    binBox_.min() -= vector::uniform(range);
+    binBox_.max() += vector::uniform(range);
+
+    // Bins about twice the range wide, at most 64 along the longest side
+    const vector span = binBox_.span();
+    binWidth_ = max(2*range, cmptMax(span)/64);
+    nx_ = label(span.x()/binWidth_) + 1;
+    ny_ = label(span.y()/binWidth_) + 1;
+    nz_ = label(span.z()/binWidth_) + 1;
+    const label nBins = nx_*ny_*nz_;
+    const labelVector nb(nx_, ny_, nz_);
+
+    // Bins overlapped by each face's box widened by the range: counted in
+    // the first pass, filled in the second
+    binStart_.setSize(nBins + 1);
+    binStart_ = 0;
+    labelList fill;
+    for (label pass = 0; pass < 2; ++pass)
+    {
+        if (pass == 1)
+        {
+            for (label b = 0; b < nBins; ++b)
+            {
+                binStart_[b + 1] += binStart_[b];
+            }
+            binFaces_.setSize(binStart_[nBins]);
+            fill = SubList<label>(binStart_, nBins);
+        }
+        forAll(boxes_, f)
+        {
+            labelVector lo, hi;
+            for (direction d = 0; d < 3; ++d)
+            {
+                const scalar o = binBox_.min()[d];
+                lo[d] = max(label((boxes_[f].min()[d] - range - o)/binWidth_), 0);
+                hi[d] =
+                    min(label((boxes_[f].max()[d] + range - o)/binWidth_), nb[d] - 1);
+            }
+            for (label k = lo.z(); k <= hi.z(); ++k)
+            {
+                for (label j = lo.y(); j <= hi.y(); ++j)
+                {
+                    for (label i = lo.x(); i <= hi.x(); ++i)
+                    {
+                        const label b = i + nx_*(j + ny_*k);
+                        if (pass == 0)
+                        {
+                            ++binStart_[b + 1];
+                        }
+                        else
+                        {
+                            binFaces_[fill[b]++] = f;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
 void Foam::demWalls::candidates
 (
     const demParticles& P,
@@ -81,15 +156,37 @@ void Foam::demWalls::candidates
         return;
     }
 
-    // Particles against each face's box widened by the largest range: with
-    // the faces few, a loop over faces per particle after a box test is
-    // cheap; the boxes are tested first
+    scalar rMax = 0;
+    for (const scalar r : P.radius)
+    {
+        rMax = max(rMax, r);
+    }
+    if (rMax + skin > binnedRange_)
+    {
+        buildBins(1.1*(rMax + skin));
+    }
+
+    // The faces listed in the particle's bin, then the exact tests
+    const point& o = binBox_.min();
     for (label i = 0; i < P.size(); ++i)
     {
         const point& x = P.position[i];
-        const scalar range = P.radius[i] + skin;
-        forAll(faces_, f)
+        if (!binBox_.contains(x))
         {
+            continue;
+        }
+        const label b =
+            min(label((x.x() - o.x())/binWidth_), nx_ - 1)
+          + nx_
+           *(
+                min(label((x.y() - o.y())/binWidth_), ny_ - 1)
+              + ny_*min(label((x.z() - o.z())/binWidth_), nz_ - 1)
+            );
+
+        const scalar range = P.radius[i] + skin;
+        for (label k = binStart_[b]; k < binStart_[b + 1]; ++k)
+        {
+            const label f = binFaces_[k];
             const boundBox& bb = boxes_[f];
             if
             (

@@ -4,6 +4,7 @@
 #include "DEMCloud.H"
 #include "DEMCollision.H"
 #include "HashTable.H"
+#include "globalIndex.H"
 #include "demContactRecord.H"
 
 template<class CloudType>
@@ -44,7 +45,7 @@ void Foam::DEMCloud<CloudType>::demMotion
     // 1. Fluid forces and heat over the step, at the start positions; the
     //    parcels' velocity change becomes the external force of the DEM
     DynamicList<parcelType*> parcels(this->size());
-    HashTable<label, labelPair, labelPair::Hash<>> index(2*this->size());
+    const globalIndex identities(this->size());
 
     for (parcelType& p : cloud)
     {
@@ -69,15 +70,25 @@ void Foam::DEMCloud<CloudType>::demMotion
             p.angularMomentum()/I,
             r,
             p.rho(),
-            parcels.size()
+            identities.toGlobal(parcels.size())
         );
+        P.origin[i] = labelPair(p.origProc(), p.origId());
         P.mass[i] = m;
         P.inertia[i] = I;
         P.externalForce[i] = m*(p.U() - U0)/dt;
 
         p.U() = U0;
-        index.insert(labelPair(p.origProc(), p.origId()), i);
         parcels.append(&p);
+    }
+
+    // Ghosts of the neighbouring processors (decomposed runs)
+    engine.exchange();
+    const label nLocal = parcels.size();
+
+    HashTable<label, labelPair, labelPair::Hash<>> index(2*P.size());
+    forAll(P.origin, i)
+    {
+        index.insert(P.origin[i], i);
     }
 
     // Histories stored on the parcels: each pair from its lower index
@@ -124,13 +135,18 @@ void Foam::DEMCloud<CloudType>::demMotion
         p.torque() = P.torque[i];
     }
 
-    labelList nContacts(parcels.size(), 0);
+    // A pair with a ghost is stored on the local parcel only (the ghost's
+    // owner keeps its own copy)
+    labelList nContacts(nLocal, 0);
     for (const contactPair& c : engine.pairs())
     {
         if (c.history.active())
         {
             ++nContacts[c.i];
-            ++nContacts[c.j];
+            if (c.j < nLocal)
+            {
+                ++nContacts[c.j];
+            }
         }
     }
     for (const wallContact& c : engine.wallContacts())
@@ -149,19 +165,20 @@ void Foam::DEMCloud<CloudType>::demMotion
     {
         if (c.history.active())
         {
-            const parcelType& pi = *parcels[c.i];
-            const parcelType& pj = *parcels[c.j];
-
             demContactRecord& ri = parcels[c.i]->contacts()[nContacts[c.i]++];
-            ri.proc = pj.origProc();
-            ri.id = pj.origId();
+            ri.proc = P.origin[c.j].first();
+            ri.id = P.origin[c.j].second();
             ri.history = c.history;
 
-            demContactRecord& rj = parcels[c.j]->contacts()[nContacts[c.j]++];
-            rj.proc = pi.origProc();
-            rj.id = pi.origId();
-            rj.history = c.history;
-            rj.history.tangentialSpring = -c.history.tangentialSpring;
+            if (c.j < nLocal)
+            {
+                demContactRecord& rj =
+                    parcels[c.j]->contacts()[nContacts[c.j]++];
+                rj.proc = P.origin[c.i].first();
+                rj.id = P.origin[c.i].second();
+                rj.history = c.history;
+                rj.history.tangentialSpring = -c.history.tangentialSpring;
+            }
         }
     }
     for (const wallContact& c : engine.wallContacts())

@@ -117,13 +117,10 @@ Foam::DEMCollision<CloudType>::DEMCollision
 
     if (Pstream::parRun())
     {
-        // Contacts across processor boundaries need the halo exchange,
-        // which is not there yet: refuse rather than miss those contacts
-        FatalIOErrorInFunction(coeffs)
-            << typeName << " runs serial only in this version (no halo"
-            << " exchange across processors yet). Run without -parallel,"
-            << " or select collisionModel pairCollision"
-            << exit(FatalIOError);
+        engine_.setHalo
+        (
+            autoPtr<demHalo>::New(boundBox(owner.mesh().points(), false))
+        );
     }
 
     engine_.setWalls(meshWalls());

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "demHalo.H"
+#include "Pstream.H"
+#include "PstreamBuffers.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
+
+Foam::demHalo::demHalo(const boundBox& meshBox)
+:
+    meshBox_(meshBox),
+    neighbours_(),
+    sendMap_(),
+    nReceived_()
+{}
+
+
+void Foam::demHalo::select
+(
+    demParticles& P,
+    const label nLocal,
+    const scalar range
+)
+{
+    P.resize(nLocal);
+
+    // This processor's region: its mesh and its particles
+    boundBox region(meshBox_);
+    for (label i = 0; i < nLocal; ++i)
+    {
+        region.add(P.position[i]);
+    }
+
+    List<boundBox> regions(Pstream::nProcs());
+    regions[Pstream::myProcNo()] = region;
+    Pstream::gatherList(regions);
+    Pstream::scatterList(regions);
+
+    // Neighbours: enlarged regions that overlap (a symmetric relation)
+    DynamicList<label> nbrs;
+    List<boundBox> grown(regions.size());
+    forAll(regions, proci)
+    {
+        grown[proci] = regions[proci];
+        grown[proci].min() -= vector::uniform(range);
+        grown[proci].max() += vector::uniform(range);
+    }
+    forAll(regions, proci)
+    {
+        if (proci != Pstream::myProcNo() && grown[proci].overlaps(region))
+        {
+            nbrs.append(proci);
+        }
+    }
+    neighbours_.transfer(nbrs);
+
+    // Send the local particles inside each neighbour's enlarged region
+    sendMap_.setSize(neighbours_.size());
+    forAll(neighbours_, k)
+    {
+        const boundBox& box = grown[neighbours_[k]];
+        DynamicList<label> send;
+        for (label i = 0; i < nLocal; ++i)
+        {
+            if (box.contains(P.position[i]))
+            {
+                send.append(i);
+            }
+        }
+        sendMap_[k].transfer(send);
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(neighbours_, k)
+    {
+        UOPstream os(neighbours_[k], buffers);
+        const labelList& send = sendMap_[k];
+        os << send.size();
+        for (const label i : send)
+        {
+            os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
+                << P.radius[i] << P.mass[i] << P.inertia[i]
+                << P.identity[i] << P.origin[i];
+        }
+    }
+    buffers.finishedSends();
+
+    nReceived_.setSize(neighbours_.size());
+    forAll(neighbours_, k)
+    {
+        UIPstream is(neighbours_[k], buffers);
+        label n;
+        is >> n;
+        nReceived_[k] = n;
+        for (label g = 0; g < n; ++g)
+        {
+            vector x, v, w;
+            scalar r, m, I;
+            label id;
+            labelPair origin;
+            is >> x >> v >> w >> r >> m >> I >> id >> origin;
+
+            P.position.append(x);
+            P.velocity.append(v);
+            P.angularVelocity.append(w);
+            P.force.append(Zero);
+            P.torque.append(Zero);
+            P.externalForce.append(Zero);
+            P.radius.append(r);
+            P.mass.append(m);
+            P.inertia.append(I);
+            P.identity.append(id);
+            P.origin.append(origin);
+        }
+    }
+}
+
+
+void Foam::demHalo::update(demParticles& P, const label nLocal) const
+{
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(neighbours_, k)
+    {
+        UOPstream os(neighbours_[k], buffers);
+        for (const label i : sendMap_[k])
+        {
+            os << P.position[i] << P.velocity[i] << P.angularVelocity[i];
+        }
+    }
+    buffers.finishedSends();
+
+    label g = nLocal;
+    forAll(neighbours_, k)
+    {
+        UIPstream is(neighbours_[k], buffers);
+        for (label n = 0; n < nReceived_[k]; ++n, ++g)
+        {
+            is >> P.position[g] >> P.velocity[g] >> P.angularVelocity[g];
+        }
+    }
+}
+
+
+Foam::label Foam::demHalo::nGhosts() const
+{
+    label n = 0;
+    for (const label c : nReceived_)
+    {
+        n += c;
+    }
+    return n;
+}

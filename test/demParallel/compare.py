@@ -1,0 +1,89 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Checks of test/demParallel/run (see there): WORKDIR holds serial/,
+# parallel/ (reconstructed) and roundTrip/ (serial 0.02 s write decomposed
+# and reconstructed). ASCII lagrangian fields, one parcel per line.
+import math
+import re
+import sys
+
+work = sys.argv[1]
+number = re.compile(r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?')
+
+POSITION_TOL = 1e-9     # [m], 2e-6 bead diameters
+VELOCITY_TOL = 1e-6     # [m/s]
+
+
+def rows(case, time, name):
+    """The parcel entries of a lagrangian field, as tuples of numbers"""
+    text = open(f'{work}/{case}/{time}/lagrangian/cloud/{name}').read()
+    body = text[text.index('}', text.index('FoamFile')) + 1:]
+    lines = [l.strip() for l in body.split('\n')
+             if l.strip() and not l.strip().startswith('//')]
+    uniform = re.match(r'^(\d+)\{(.*)\}$', lines[0])
+    if uniform:
+        value = tuple(float(x) for x in number.findall(uniform.group(2)))
+        return [value]*int(uniform.group(1))
+    n = int(lines[0])
+    assert lines[1] == '(', name
+    return [tuple(float(x) for x in number.findall(l)) for l in lines[2:2 + n]]
+
+
+def positions(case, time):
+    return [r[:3] for r in rows(case, time, 'positions')]
+
+
+failures = []
+
+
+def check(ok, message):
+    print(('ok   ' if ok else 'FAIL ') + message)
+    if not ok:
+        failures.append(message)
+
+
+# 1. Contact counts of every step
+def contactLines(case):
+    return [l.split(' s, ', 1)[1] for l in open(f'{work}/{case}/log.sinterFoam')
+            if l.strip().startswith('DEM:')]
+
+
+s, p = contactLines('serial'), contactLines('parallel')
+pairs = [int(l.split()[0]) for l in s]
+walls = [int(l.split()[3]) for l in s]
+check(len(s) == 200 and s == p,
+      f'contact counts identical in all {len(s)} steps (serial max '
+      f'{max(pairs)} particle-particle, {max(walls)} particle-wall)')
+check(max(pairs) > 0 and max(walls) > 0, 'contacts of both kinds occurred')
+
+# 2. Positions and velocities at 0.02 s, parcels matched by nearest position
+xs, xp = positions('serial', 0.02), positions('parallel', 0.02)
+us, up = rows('serial', 0.02, 'U'), rows('parallel', 0.02, 'U')
+check(len(xs) == len(xp) == 48, f'48 beads in both runs ({len(xs)}, {len(xp)})')
+used = set()
+dx = du = 0.0
+for a, ua in zip(xs, us):
+    k = min(range(len(xp)), key=lambda k: math.dist(a, xp[k]))
+    used.add(k)
+    dx = max(dx, math.dist(a, xp[k]))
+    du = max(du, math.dist(ua, up[k]))
+check(len(used) == len(xs), 'one-to-one match of the beads')
+check(dx <= POSITION_TOL, f'largest position difference {dx:.3g} m '
+      f'(tolerance {POSITION_TOL:g} m)')
+check(du <= VELOCITY_TOL, f'largest velocity difference {du:.3g} m/s '
+      f'(tolerance {VELOCITY_TOL:g} m/s)')
+
+# 3. decomposePar + reconstructPar keep every parcel field exactly
+fields = ['U', 'd', 'angularMomentum', 'demContactPartner', 'demContactSpring',
+          'demContactDuration', 'demContactFaceCentre', 'demContactBridge']
+xo, xr = positions('serial', 0.02), positions('roundTrip', 0.02)
+index = {x: k for k, x in enumerate(xr)}
+check(len(xo) == len(xr) and all(x in index for x in xo),
+      'round trip: every parcel at exactly its position')
+records = sum(int(r[0]) for r in rows('serial', 0.02, 'demContactDuration'))
+check(records > 0, f'round trip: {records} contact records to carry')
+for name in fields:
+    a, b = rows('serial', 0.02, name), rows('roundTrip', 0.02, name)
+    same = all(a[k] == b[index[x]] for k, x in enumerate(xo) if x in index)
+    check(same, f'round trip: {name} identical')
+
+sys.exit(1 if failures else 0)
