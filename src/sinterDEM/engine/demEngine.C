@@ -3,6 +3,41 @@
 
 #include "demEngine.H"
 
+namespace
+{
+
+//- Items grouped by their particle i in [0, n): offsets start (n + 1) and
+//  the items in that order (counting sort, stable)
+template<class Item>
+void groupByParticle
+(
+    const Foam::UList<Item>& items,
+    const Foam::label n,
+    Foam::labelList& start,
+    Foam::List<const Item*>& sorted
+)
+{
+    using namespace Foam;
+    start.setSize(n + 1);
+    start = 0;
+    for (const Item& c : items)
+    {
+        ++start[c.i + 1];
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        start[i + 1] += start[i];
+    }
+    sorted.setSize(items.size());
+    labelList fill(SubList<label>(start, n));
+    for (const Item& c : items)
+    {
+        sorted[fill[c.i]++] = &c;
+    }
+}
+
+} // End anonymous namespace
+
 Foam::demEngine::demEngine
 (
     const dictionary& dict,
@@ -121,23 +156,9 @@ void Foam::demEngine::buildLists()
     skin_ = skinFraction_*2*rMax;
 
     // Kept pair histories, indexed by their (local) first particle
-    labelList start(nL + 1, 0);
-    for (const keptPair& c : keptPairs_)
-    {
-        ++start[c.i + 1];
-    }
-    for (label i = 0; i < nL; ++i)
-    {
-        start[i + 1] += start[i];
-    }
-    List<const keptPair*> kept(keptPairs_.size());
-    {
-        labelList fill(SubList<label>(start, nL));
-        for (const keptPair& c : keptPairs_)
-        {
-            kept[fill[c.i]++] = &c;
-        }
-    }
+    labelList start;
+    List<const keptPair*> kept;
+    groupByParticle(keptPairs_, nL, start, kept);
 
     // New lists; pairs of two ghosts are their owners' business
     pairs_.clear();
@@ -170,16 +191,9 @@ void Foam::demEngine::buildLists()
     }
 
     // Wall contacts of local particles, history by (particle, face)
-    labelList wallStart(nL + 1, 0);
-    for (const wallContact& c : keptWalls_)
-    {
-        ++wallStart[c.i + 1];
-    }
-    for (label i = 0; i < nL; ++i)
-    {
-        wallStart[i + 1] += wallStart[i];
-    }
-    // keptWalls_ is grouped by particle in increasing order
+    labelList wallStart;
+    List<const wallContact*> keptWall;
+    groupByParticle(keptWalls_, nL, wallStart, keptWall);
 
     wallContacts_.clear();
     walls_.candidates(P, skin_, wallContacts_);
@@ -200,9 +214,9 @@ void Foam::demEngine::buildLists()
     {
         for (label k = wallStart[c.i]; k < wallStart[c.i + 1]; ++k)
         {
-            if (keptWalls_[k].face == c.face)
+            if (keptWall[k]->face == c.face)
             {
-                c.history = keptWalls_[k].history;
+                c.history = keptWall[k]->history;
                 break;
             }
         }
@@ -211,23 +225,9 @@ void Foam::demEngine::buildLists()
     // Wall histories given by face centre
     if (pendingWall_.size())
     {
-        labelList pendStart(nL + 1, 0);
-        for (const wallContactRecord& r : pendingWall_)
-        {
-            ++pendStart[r.i + 1];
-        }
-        for (label i = 0; i < nL; ++i)
-        {
-            pendStart[i + 1] += pendStart[i];
-        }
-        List<const wallContactRecord*> pend(pendingWall_.size());
-        {
-            labelList fill(SubList<label>(pendStart, nL));
-            for (const wallContactRecord& r : pendingWall_)
-            {
-                pend[fill[r.i]++] = &r;
-            }
-        }
+        labelList pendStart;
+        List<const wallContactRecord*> pend;
+        groupByParticle(pendingWall_, nL, pendStart, pend);
 
         const scalar tol2 = sqr(1e-6*skin_);
         for (wallContact& c : wallContacts_)
