@@ -15,7 +15,7 @@
 #include "makeParcelHeatTransferModels.H"
 
 // sinterFoam's own forces
-#include "BeetstraDragForce.H"
+#include "VoidageDragForce.H"
 #include "GasPressureGradientForce.H"
 #include "WeightForce.H"
 #include "DEMCollision.H"
@@ -32,7 +32,7 @@ makeParcelSurfaceFilmModels(basicSinterCloud);
 makeParcelHeatTransferModels(basicSinterCloud);
 
 // sinterFoam's additions to the force table
-makeParticleForceModelType(BeetstraDragForce, basicSinterCloud);
+makeParticleForceModelType(VoidageDragForce, basicSinterCloud);
 makeParticleForceModelType(GasPressureGradientForce, basicSinterCloud);
 makeParticleForceModelType(WeightForce, basicSinterCloud);
 
