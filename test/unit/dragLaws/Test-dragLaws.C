@@ -7,7 +7,8 @@ Application
 Description
     Every drag law of src/sinterPhysics/drag against values computed by hand
     (a separate Python evaluation of each law in its published dimensional
-    form: beta of Wen-Yu and Ergun, the force of Di Felice, converted with
+    form: beta of Wen-Yu, Ergun and Koch-Hill (Benyahia et al. 2006), the
+    force of Di Felice, converted with
     F = d^2 beta/(18 mu eps (1 - eps)) or F = F_d/(3 pi mu d eps |u - v|);
     Beetstra as published in F), at five (eps, Re) points from packed
     (0.4) to dilute (0.95) and Re 0.5-500; the Gidaspow switch at
@@ -63,13 +64,14 @@ int main(int argc, char *argv[])
     const scalar eps[5] = {0.4, 0.5, 0.7, 0.9, 0.95};
     const scalar Re[5] = {0.5, 10, 100, 1, 500};
 
-    const wordList names({"Beetstra", "WenYu", "DiFelice", "Gidaspow"});
-    const scalar reference[4][5] =
+    const wordList names({"Beetstra", "WenYu", "DiFelice", "Gidaspow", "KochHill"});
+    const scalar reference[5][5] =
     {
         {3.7849525142e+01, 2.2773968590e+01, 1.9688225480e+01, 2.4981602959e+00, 2.1969024899e+01},
         {3.0986275685e+01, 2.1712402175e+01, 1.6722322348e+01, 1.6893229452e+00, 1.4135713594e+01},
         {3.0244260893e+01, 1.6786007557e+01, 1.5657291707e+01, 1.7743332829e+00, 1.7680362218e+01},
-        {3.1553819444e+01, 2.0555555556e+01, 2.4943310658e+01, 1.6893229452e+00, 1.4135713594e+01}
+        {3.1553819444e+01, 2.0555555556e+01, 2.4943310658e+01, 1.6893229452e+00, 1.4135713594e+01},
+        {3.7516183828e+01, 2.2289250000e+01, 1.6908814476e+01, 2.6568372902e+00, 2.1747430774e+01}
     };
 
     forAll(names, l)
@@ -90,6 +92,12 @@ int main(int argc, char *argv[])
     const autoPtr<dragLaw> gidaspow(law("Gidaspow"));
     check("Gidaspow(eps 0.7999999, Re 1): Ergun", gidaspow->F(0.7999999, 1), 2.7560783800e+00);
     check("Gidaspow(eps 0.8, Re 1): Wen-Yu", gidaspow->F(0.8, 1), 2.5966857093e+00);
+
+    // Koch-Hill: the dilute branches (phi <= 0.01) and the low-Re one
+    const autoPtr<dragLaw> kochHill(law("KochHill"));
+    check("KochHill(eps 0.995, Re 0.5): 1 + 3/8 Re'", kochHill->F(0.995, 0.5), 1.0882812500e+00);
+    check("KochHill(eps 0.995, Re 200): F2 + F3 Re'", kochHill->F(0.995, 200), 5.2878527882e+00);
+    check("KochHill(eps 0.95, Re 5): F0 + F1 Re'^2", kochHill->F(0.95, 5), 2.1321276493e+00);
 
     // Wen-Yu above Re = 1000: Cd = 0.44
     check("WenYu(eps 0.9, Re 2000)", law("WenYu")->F(0.9, 2000), 5.3862470717e+01);
