@@ -31,6 +31,7 @@ Description
 #include "particle.H"
 #include "Random.H"
 #include "volumeFractionModel.H"
+#include "diffusionSmoother.H"
 
 using namespace Foam;
 
@@ -141,6 +142,65 @@ int main(int argc, char *argv[])
         if (relErr > 1e-12)
         {
             Info<< "FAIL: " << method << " does not conserve volume" << endl;
+            ok = false;
+        }
+
+        // 2. Smoothing over two mean cell widths (eq 4.4): conservative to
+        //    the solver tolerance and bounded by the unsmoothed extremes
+        dictionary smoothDict;
+        smoothDict.add("smoothingLength", 2*Foam::cbrt(meanCellVolume));
+        const diffusionSmoother smoother(mesh, smoothDict);
+        const scalarField thetaS(smoother.smooth<scalar>(theta, "theta"));
+        const scalar smoothErr =
+            mag(gSum(thetaS*mesh.V().field()) - meshSolid)/meshSolid;
+        const scalar lo = gMin(theta);
+        const scalar hi = gMax(theta);
+        const scalar tolBound = 1e-12*hi;
+        const bool bounded =
+            gMin(thetaS) >= lo - tolBound && gMax(thetaS) <= hi + tolBound;
+
+        Info<< method << ": smoothing changes sum(theta V) by " << smoothErr
+            << " relative (tolerance 1e-10); theta " << lo << ".." << hi
+            << " -> " << gMin(thetaS) << ".." << gMax(thetaS) << endl;
+
+        if (smoothErr > 1e-10 || !bounded)
+        {
+            Info<< "FAIL: " << method << " smoothing not conservative or"
+                << " not bounded" << endl;
+            ok = false;
+        }
+
+        // 3. A cell field gathered to the particles with the transpose of
+        //    (spreading, smoothing) gives exactly the cells' sum weighted by
+        //    the smoothed theta: sum_p V_p g(x_p) = sum_c theta_c V_c g_c
+        //    (the pressure-gradient force against the gas's, eq 5.5/5.2)
+        vectorField g(mesh.nCells());
+        {
+            Random grng(77 + Pstream::myProcNo());
+            forAll(g, celli)
+            {
+                g[celli] = grng.sample01<vector>() - 0.5*vector::one;
+            }
+        }
+        const vectorField gS(smoother.smooth<vector>(g, "g"));
+        const vectorField gPoints(model->pointValues(gS));
+        vector parcelSum = Zero;
+        forAll(particles, i)
+        {
+            parcelSum += localVolumes[i]*model->gather(particles[i], gS, gPoints);
+        }
+        reduce(parcelSum, sumOp<vector>());
+        const vector cellSum = gSum(thetaS*mesh.V().field()*g);
+        const scalar gatherErr = mag(parcelSum - cellSum)/mag(cellSum);
+
+        Info<< method << ": sum_p V_p g(x_p) = " << parcelSum
+            << ", sum_c theta V g = " << cellSum << ", relative difference "
+            << gatherErr << " (tolerance 1e-9)" << endl;
+
+        if (gatherErr > 1e-9)
+        {
+            Info<< "FAIL: " << method << " gather is not the transpose of"
+                << " the spreading" << endl;
             ok = false;
         }
 

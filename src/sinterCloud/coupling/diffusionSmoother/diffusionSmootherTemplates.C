@@ -4,6 +4,9 @@
 #include "diffusionSmoother.H"
 #include "fvm.H"
 #include "zeroGradientFvPatchFields.H"
+#include "laplacianScheme.H"
+#include "IStringStream.H"
+#include "surfaceFields.H"
 
 template<class Type>
 Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
@@ -32,15 +35,33 @@ Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
     fs.primitiveFieldRef() = f;
     fs.correctBoundaryConditions();
 
+    // The uncorrected Gauss Laplacian on every mesh: a symmetric M-matrix
+    // (no explicit non-orthogonal correction), so the smoothing is bounded
+    // and its own transpose in the volume-weighted product
+    IStringStream schemeData("Gauss linear uncorrected");
+    tmp<fv::laplacianScheme<Type, scalar>> laplacian
+    (
+        fv::laplacianScheme<Type, scalar>::New(mesh_, schemeData)
+    );
+    const surfaceScalarField L2
+    (
+        IOobject
+        (
+            "smoothingLength2",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar("L2", dimArea, sqr(length_))
+    );
+
     fvMatrix<Type> eqn
     (
         fvm::Sp(dimensionedScalar("one", dimless, 1.0), fs)
-      - fvm::laplacian
-        (
-            dimensionedScalar("L2", dimArea, sqr(length_)),
-            fs,
-            "laplacian(smoothing)"
-        )
+      - laplacian.ref().fvmLaplacian(L2, fs)
     );
     eqn.source() += mesh_.V().field()*f;
 
