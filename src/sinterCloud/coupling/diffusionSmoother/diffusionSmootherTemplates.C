@@ -17,17 +17,23 @@ Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
 {
     typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
 
-    fieldType fs
-    (
-        IOobject
+    // Unregistered work fields
+    auto io = [&](const word& fieldName)
+    {
+        return IOobject
         (
-            name + ":smooth",
+            fieldName,
             mesh_.time().timeName(),
             mesh_,
             IOobject::NO_READ,
             IOobject::NO_WRITE,
             false
-        ),
+        );
+    };
+
+    fieldType fs
+    (
+        io(name + ":smooth"),
         mesh_,
         dimensioned<Type>(dimless, Zero),
         zeroGradientFvPatchField<Type>::typeName
@@ -45,15 +51,7 @@ Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
     );
     const surfaceScalarField L2
     (
-        IOobject
-        (
-            "smoothingLength2",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
+        io("smoothingLength2"),
         mesh_,
         dimensionedScalar("L2", dimArea, sqr(length_))
     );

@@ -25,12 +25,18 @@ Foam::scalar Foam::dragLaws::KochHill::F(const scalar eps, const scalar Re) cons
     const scalar phiLnPhi = phi > 0 ? phi*std::log(phi) : 0;
     const scalar sqrtHalfPhi = std::sqrt(0.5*phi);
 
-    const scalar F2 =
-        phi < 0.4
-      ? (1 - w)*(1 + 3*sqrtHalfPhi + 135.0/64.0*phiLnPhi + 17.89*phi)
-       /(1 + 0.681*phi - 11.03*sqr(phi) + 15.41*pow3(phi))
-      + w*dense
-      : dense;
+    // F0 and F2: the dilute fit blended into the dense limit below 0.4
+    auto blended = [&](const scalar a, const scalar b, const scalar c)
+    {
+        return
+            phi < 0.4
+          ? (1 - w)*(1 + 3*sqrtHalfPhi + 135.0/64.0*phiLnPhi + a*phi)
+           /(1 + 0.681*phi + b*sqr(phi) + c*pow3(phi))
+          + w*dense
+          : dense;
+    };
+
+    const scalar F2 = blended(17.89, -11.03, 15.41);
 
     const scalar F3 =
         phi < 0.0953
@@ -46,12 +52,7 @@ Foam::scalar Foam::dragLaws::KochHill::F(const scalar eps, const scalar Re) cons
     }
     else
     {
-        const scalar F0 =
-            phi < 0.4
-          ? (1 - w)*(1 + 3*sqrtHalfPhi + 135.0/64.0*phiLnPhi + 17.14*phi)
-           /(1 + 0.681*phi - 8.48*sqr(phi) + 8.16*pow3(phi))
-          + w*dense
-          : dense;
+        const scalar F0 = blended(17.14, -8.48, 8.16);
 
         const scalar F1 =
             phi <= 0.1
