@@ -43,8 +43,7 @@ Description
 #include "constrainHbyA.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "basicSinterCloud.H"
-#include "diffusionSmoother.H"
-#include "volumeFractionModel.H"
+#include "cloudCoupling.H"
 
 int main(int argc, char *argv[])
 {

@@ -36,6 +36,22 @@ void groupByParticle
     }
 }
 
+
+//- Keep the contacts whose particle i is local (i < nLocal), in order
+template<class Contact>
+void keepLocal(Foam::DynamicList<Contact>& contacts, const Foam::label nLocal)
+{
+    Foam::label k = 0;
+    for (const Contact& c : contacts)
+    {
+        if (c.i < nLocal)
+        {
+            contacts[k++] = c;
+        }
+    }
+    contacts.resize(k);
+}
+
 } // End anonymous namespace
 
 Foam::demEngine::demEngine
@@ -166,15 +182,7 @@ void Foam::demEngine::buildLists()
     bins_.pairs(P, skin_, pairs_);
     if (nL < n)
     {
-        label k = 0;
-        forAll(pairs_, p)
-        {
-            if (pairs_[p].i < nL)
-            {
-                pairs_[k++] = pairs_[p];
-            }
-        }
-        pairs_.resize(k);
+        keepLocal(pairs_, nL);
     }
 
     for (contactPair& c : pairs_)
@@ -199,15 +207,7 @@ void Foam::demEngine::buildLists()
     walls_.candidates(P, skin_, wallContacts_);
     if (nL < n)
     {
-        label k = 0;
-        forAll(wallContacts_, w)
-        {
-            if (wallContacts_[w].i < nL)
-            {
-                wallContacts_[k++] = wallContacts_[w];
-            }
-        }
-        wallContacts_.resize(k);
+        keepLocal(wallContacts_, nL);
     }
 
     for (wallContact& c : wallContacts_)

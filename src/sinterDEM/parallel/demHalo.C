@@ -141,13 +141,3 @@ void Foam::demHalo::update(demParticles& P, const label nLocal) const
     }
 }
 
-
-Foam::label Foam::demHalo::nGhosts() const
-{
-    label n = 0;
-    for (const label c : nReceived_)
-    {
-        n += c;
-    }
-    return n;
-}

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "HertzMindlin.H"
+#include "HertzCollision.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -109,7 +110,9 @@ Foam::scalar Foam::contactLaws::HertzMindlin::collisionTime
     const scalar v
 ) const
 {
-    const scalar rStar = 0.5*r;
-    const scalar mStar = 0.5*m;
-    return 2.868*pow(sqr(mStar)/(rStar*sqr(YStarPP_)*v), 0.2);
+    // Eq 5.12 for two equal particles of the DEM material
+    return HertzCollision
+    (
+        r, m, particle_.youngsModulus(), particle_.poissonsRatio()
+    ).contactTime(v);
 }

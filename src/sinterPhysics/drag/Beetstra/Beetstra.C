@@ -3,7 +3,6 @@
 
 #include "Beetstra.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {

@@ -3,7 +3,6 @@
 
 #include "DiFelice.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {

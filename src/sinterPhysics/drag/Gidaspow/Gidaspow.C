@@ -3,7 +3,8 @@
 
 #include "Gidaspow.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
+#include "WenYu.H"
+#include "ErgunDrag.H"
 
 namespace Foam
 {
@@ -17,9 +18,5 @@ namespace dragLaws
 
 Foam::scalar Foam::dragLaws::Gidaspow::F(const scalar eps, const scalar Re) const
 {
-    if (eps < 0.8)
-    {
-        return (150*(1 - eps) + 1.75*Re)/(18*sqr(eps));
-    }
-    return CdRe24SchillerNaumann(Re)*std::pow(eps, -3.65);
+    return eps < 0.8 ? ErgunDrag::F(eps, Re) : WenYu::value(eps, Re);
 }

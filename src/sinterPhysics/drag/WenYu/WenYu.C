@@ -3,7 +3,6 @@
 
 #include "WenYu.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -15,7 +14,13 @@ namespace dragLaws
 }
 
 
-Foam::scalar Foam::dragLaws::WenYu::F(const scalar eps, const scalar Re) const
+Foam::scalar Foam::dragLaws::WenYu::value(const scalar eps, const scalar Re)
 {
     return CdRe24SchillerNaumann(Re)*std::pow(eps, -3.65);
+}
+
+
+Foam::scalar Foam::dragLaws::WenYu::F(const scalar eps, const scalar Re) const
+{
+    return value(eps, Re);
 }

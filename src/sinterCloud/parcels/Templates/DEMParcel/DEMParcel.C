@@ -72,11 +72,4 @@ void Foam::DEMParcel<ParcelType>::transformProperties(const tensor& T)
 }
 
 
-template<class ParcelType>
-void Foam::DEMParcel<ParcelType>::transformProperties(const vector& separation)
-{
-    ParcelType::transformProperties(separation);
-}
-
-
 #include "DEMParcelIO.C"

@@ -3,30 +3,7 @@
 
 #include "GasPressureGradientForce.H"
 #include "fvcGrad.H"
-#include "IOdictionary.H"
 
-
-template<class CloudType>
-void Foam::GasPressureGradientForce<CloudType>::readCoupling()
-{
-    const fvMesh& mesh = this->mesh();
-    const word dictName("couplingProperties");
-
-    if (!mesh.template foundObject<IOdictionary>(dictName))
-    {
-        FatalErrorInFunction
-            << "The " << typeName << " force gathers grad(p) with the "
-            << "voidage's operators, read from constant/" << dictName
-            << ", which the solver has not read"
-            << exit(FatalError);
-    }
-
-    const IOdictionary& dict =
-        mesh.template lookupObject<IOdictionary>(dictName);
-
-    volumeFraction_ = volumeFractionModel::New(mesh, dict);
-    smoother_.reset(new diffusionSmoother(mesh, dict));
-}
 
 template<class CloudType>
 Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
@@ -38,10 +15,9 @@ Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
 :
     // Coefficients optional: `gasPressureGradient;` or with a dictionary
     ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
-    pName_(dict.template lookupOrDefault<word>("p", "p"))
-{
-    readCoupling();
-}
+    pName_(dict.template lookupOrDefault<word>("p", "p")),
+    coupling_(cloudCoupling::New(mesh))
+{}
 
 
 template<class CloudType>
@@ -51,10 +27,9 @@ Foam::GasPressureGradientForce<CloudType>::GasPressureGradientForce
 )
 :
     ParticleForce<CloudType>(f),
-    pName_(f.pName_)
-{
-    readCoupling();
-}
+    pName_(f.pName_),
+    coupling_(f.coupling_)
+{}
 
 
 template<class CloudType>
@@ -66,12 +41,12 @@ void Foam::GasPressureGradientForce<CloudType>::cacheFields(const bool store)
             this->mesh().template lookupObject<volScalarField>(pName_);
 
         gradpCells_ =
-            smoother_->smooth<vector>
+            coupling_.smoother().smooth<vector>
             (
                 fvc::grad(p)().primitiveField(),
                 "gasPressureGradient"
             );
-        gradpPoints_ = volumeFraction_->pointValues(gradpCells_);
+        gradpPoints_ = coupling_.volumeFraction().pointValues(gradpCells_);
     }
     else
     {
@@ -92,7 +67,8 @@ Foam::forceSuSp Foam::GasPressureGradientForce<CloudType>::calcNonCoupled
     const scalar muc
 ) const
 {
-    const vector gradp = volumeFraction_->gather(p, gradpCells_, gradpPoints_);
+    const vector gradp =
+        coupling_.volumeFraction().gather(p, gradpCells_, gradpPoints_);
 
     return forceSuSp(-p.volume()*gradp, 0);
 }

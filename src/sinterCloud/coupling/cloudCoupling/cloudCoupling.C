@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "cloudCoupling.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cloudCoupling, 0);
+}
+
+
+namespace
+{
+
+Foam::scalar readVoidageMin(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    const scalar value = dict.get<scalar>("voidageMin");
+    if (value <= 0 || value >= 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "voidageMin " << value << " must lie in (0, 1)"
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+Foam::cloudCoupling::cloudCoupling(const fvMesh& mesh)
+:
+    MeshObject<fvMesh, TopologicalMeshObject, cloudCoupling>(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "couplingProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ_IF_MODIFIED,
+            IOobject::NO_WRITE
+        )
+    ),
+    voidageMin_(readVoidageMin(dict_)),
+    volumeFraction_(volumeFractionModel::New(mesh, dict_)),
+    smoother_(mesh, dict_)
+{}
