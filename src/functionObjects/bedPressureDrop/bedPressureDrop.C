@@ -60,6 +60,7 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     writeTabbed(file(), "dp");
     writeTabbed(file(), "W/A");
     writeTabbed(file(), "dp/(W/A)");
+    writeTabbed(file(), "eps_bed");
     file() << endl;
 }
 
@@ -73,6 +74,7 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
     upperPatch_ = requiredPatch(mesh_, dict, "upperPatch");
     pName_ = dict.lookupOrDefault<word>("p", "p");
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
+    voidageName_ = dict.lookupOrDefault<word>("voidage", "voidage");
 
     return true;
 }
@@ -102,12 +104,22 @@ bool Foam::functionObjects::bedPressureDrop::write()
     const volScalarField& p = lookupObject<volScalarField>(pName_);
     const scalar dp = patchAverage(p, lowerPatch_) - patchAverage(p, upperPatch_);
 
+    const volScalarField& voidage = lookupObject<volScalarField>(voidageName_);
+
+    // Mass and mass-weighted voidage at the parcels
     scalar mass = 0;
+    scalar massVoidage = 0;
     if (const basicSinterCloud* cloudPtr = findSinterCloud(mesh_, cloudName_))
     {
-        mass = cloudPtr->massInSystem();
+        for (const basicSinterParcel& parcel : *cloudPtr)
+        {
+            const scalar m = parcel.nParticle()*parcel.mass();
+            mass += m;
+            massVoidage += m*voidage[parcel.cell()];
+        }
     }
     reduce(mass, sumOp<scalar>());
+    reduce(massVoidage, sumOp<scalar>());
 
     const scalar g = mag(meshObjects::gravity::New(mesh_.time()).value());
     const scalar area = gSum(mesh_.magSf().boundaryField()[lowerPatch_]);
@@ -117,7 +129,8 @@ bool Foam::functionObjects::bedPressureDrop::write()
     {
         file()
             << mesh_.time().timeName() << tab << dp << tab << WbyA << tab
-            << (WbyA > 0 ? dp/WbyA : 0) << endl;
+            << (WbyA > 0 ? dp/WbyA : 0) << tab
+            << (mass > 0 ? massVoidage/mass : 1) << endl;
     }
 
     return true;

@@ -88,6 +88,42 @@ int main(int argc, char *argv[])
         }
     }
 
+    // Ergun at all voidages (beta of Ergun converted to F, as above)
+    {
+        const autoPtr<dragLaw> ergun(law("Ergun"));
+        const scalar ergunRef[5] =
+            {3.1553819444e+01, 2.0555555556e+01, 2.4943310658e+01,
+             1.1488340192e+00, 5.4324407510e+01};
+        for (label k = 0; k < 5; ++k)
+        {
+            check
+            (
+                "Ergun(eps " + name(eps[k]) + ", Re " + name(Re[k]) + ")",
+                ergun->F(eps[k], Re[k]),
+                ergunRef[k]
+            );
+        }
+    }
+
+    // Beetstra's polydisperse correction: (eps y + phi y^2 + 0.064 eps y^3)
+    // times the monodisperse F at Re of the Sauter mean, y = d_i/<d>
+    {
+        dictionary dict;
+        dict.add("law", "Beetstra");
+        dict.add("polydisperse", true);
+        const autoPtr<dragLaw> poly(dragLaw::New(dict));
+        if (!poly->polydisperse() || law("Beetstra")->polydisperse())
+        {
+            Info<< "FAIL Beetstra: polydisperse switch not honoured" << nl;
+            ++nFailed;
+        }
+        check("Beetstra poly(eps 0.4, Re 0.5, y 1.4)", poly->Fpolydisperse(0.4, 0.5, 1.4), 6.8365568530e+01);
+        check("Beetstra poly(eps 0.5, Re 10, y 0.7)", poly->Fpolydisperse(0.5, 10, 0.7), 1.3800478390e+01);
+        check("Beetstra poly(eps 0.7, Re 100, y 1) = (1 + 0.064 eps) F", poly->Fpolydisperse(0.7, 100, 1), 2.0570257982e+01);
+        // a law without a size correction ignores y
+        check("WenYu Fpolydisperse = F", law("WenYu")->Fpolydisperse(0.7, 100, 1.5), reference[1][2]);
+    }
+
     // Gidaspow: Ergun just below eps = 0.8, Wen-Yu from 0.8 on
     const autoPtr<dragLaw> gidaspow(law("Gidaspow"));
     check("Gidaspow(eps 0.7999999, Re 1): Ergun", gidaspow->F(0.7999999, 1), 2.7560783800e+00);

@@ -14,6 +14,33 @@ namespace dragLaws
 }
 
 
+Foam::dragLaws::Beetstra::Beetstra(const dictionary& dict)
+:
+    polydisperse_(dict.lookupOrDefault<bool>("polydisperse", false))
+{}
+
+
+Foam::scalar Foam::dragLaws::Beetstra::sizeFactor
+(
+    const scalar eps,
+    const scalar y
+)
+{
+    return eps*y + (1 - eps)*sqr(y) + 0.064*eps*pow3(y);
+}
+
+
+Foam::scalar Foam::dragLaws::Beetstra::Fpolydisperse
+(
+    const scalar eps,
+    const scalar Re,
+    const scalar y
+) const
+{
+    return sizeFactor(eps, y)*F(eps, Re);
+}
+
+
 Foam::scalar Foam::dragLaws::Beetstra::F(const scalar eps, const scalar Re) const
 {
     const scalar phi = 1 - eps;

@@ -25,7 +25,9 @@ Foam::VoidageDragForce<CloudType>::VoidageDragForce
             dict_.template lookupOrDefault<word>("voidage", "voidage")
         )
     ),
-    K_(coarseGrainFactor(owner.constProps().dict()))
+    K_(coarseGrainFactor(owner.constProps().dict())),
+    coupling_(cloudCoupling::New(mesh)),
+    dSauter_()
 {}
 
 
@@ -39,8 +41,55 @@ Foam::VoidageDragForce<CloudType>::VoidageDragForce
     dict_(df.dict_),
     law_(dragLaw::New(dict_)),
     voidage_(df.voidage_),
-    K_(df.K_)
+    K_(df.K_),
+    coupling_(df.coupling_),
+    dSauter_(df.dSauter_)
 {}
+
+
+template<class CloudType>
+void Foam::VoidageDragForce<CloudType>::cacheFields(const bool store)
+{
+    if (!store || !law_->polydisperse())
+    {
+        dSauter_.clear();
+        return;
+    }
+
+    // Solid volume and primary-particle surface of every parcel, spread and
+    // smoothed as the voidage is: <d> = 6 V/A per cell
+    const CloudType& cloud = this->owner();
+    UPtrList<const particle> parcels(cloud.size());
+    scalarField volume(cloud.size());
+    scalarField surface(cloud.size());
+    label i = 0;
+    for (const typename CloudType::parcelType& p : cloud)
+    {
+        parcels.set(i, &p);
+        volume[i] = p.nParticle()*p.volume();
+        // nParticle K^3 primaries of diameter d/K
+        surface[i] = p.nParticle()*K_*constant::mathematical::pi*sqr(p.d());
+        ++i;
+    }
+
+    const volumeFractionModel& mapping = coupling_.volumeFraction();
+    const diffusionSmoother& smoother = coupling_.smoother();
+    const scalarField V
+    (
+        smoother.smooth(mapping.theta(parcels, volume)(), "dragSolidVolume")
+    );
+    const scalarField A
+    (
+        smoother.smooth(mapping.theta(parcels, surface)(), "dragSolidSurface")
+    );
+
+    dSauter_.setSize(V.size());
+    forAll(V, celli)
+    {
+        // A cell reached by no parcel keeps 0: a parcel there uses its own d
+        dSauter_[celli] = A[celli] > VSMALL ? 6*V[celli]/A[celli] : 0;
+    }
+}
 
 
 template<class CloudType>
@@ -56,12 +105,23 @@ Foam::forceSuSp Foam::VoidageDragForce<CloudType>::calcCoupled
 {
     const scalar eps = voidage_[p.cell()];
     const scalar dp = p.d()/K_;
-    const scalar ReP = eps*td.rhoc()*dp*mag(td.Uc() - p.U())/muc;
+    const scalar slip = mag(td.Uc() - p.U());
+
+    scalar F;
+    if (law_->polydisperse())
+    {
+        const scalar dMean =
+            dSauter_.size() && dSauter_[p.cell()] > 0
+          ? dSauter_[p.cell()]
+          : dp;
+        const scalar ReMean = eps*td.rhoc()*dMean*slip/muc;
+        F = law_->Fpolydisperse(eps, ReMean, dp/dMean);
+    }
+    else
+    {
+        F = law_->F(eps, eps*td.rhoc()*dp*slip/muc);
+    }
 
     // K^3 primaries of diameter dp: 3 pi mu dp eps F K^3
-    return forceSuSp
-    (
-        Zero,
-        3*constant::mathematical::pi*muc*dp*eps*law_->F(eps, ReP)*pow3(K_)
-    );
+    return forceSuSp(Zero, 3*constant::mathematical::pi*muc*dp*eps*F*pow3(K_));
 }
