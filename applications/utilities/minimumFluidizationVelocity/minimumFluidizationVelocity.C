@@ -222,15 +222,8 @@ scalar dragPerVelocity
     scalar sum = 0;
     forAll(s.d, i)
     {
-        scalar F;
-        if (law.polydisperse())
-        {
-            F = law.Fpolydisperse(eps, rho*dMean*U/mu, s.d[i]/dMean);
-        }
-        else
-        {
-            F = law.F(eps, rho*s.d[i]*U/mu);
-        }
+        // Re = eps rho |u - v| d/mu = rho U d/mu
+        const scalar F = law.particleF(eps, s.d[i], dMean, rho*U/mu);
         sum += s.x[i]*18*mu*F/(eps*sqr(s.d[i]));
     }
     return sum;

@@ -107,20 +107,9 @@ Foam::forceSuSp Foam::VoidageDragForce<CloudType>::calcCoupled
     const scalar dp = p.d()/K_;
     const scalar slip = mag(td.Uc() - p.U());
 
-    scalar F;
-    if (law_->polydisperse())
-    {
-        const scalar dMean =
-            dSauter_.size() && dSauter_[p.cell()] > 0
-          ? dSauter_[p.cell()]
-          : dp;
-        const scalar ReMean = eps*td.rhoc()*dMean*slip/muc;
-        F = law_->Fpolydisperse(eps, ReMean, dp/dMean);
-    }
-    else
-    {
-        F = law_->F(eps, eps*td.rhoc()*dp*slip/muc);
-    }
+    // <d> of the parcel's cell (0 where no parcel reached it: dp is used)
+    const scalar dMean = dSauter_.size() ? dSauter_[p.cell()] : 0;
+    const scalar F = law_->particleF(eps, dp, dMean, eps*td.rhoc()*slip/muc);
 
     // K^3 primaries of diameter dp: 3 pi mu dp eps F K^3
     return forceSuSp(Zero, 3*constant::mathematical::pi*muc*dp*eps*F*pow3(K_));
