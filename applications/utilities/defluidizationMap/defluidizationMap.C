@@ -36,7 +36,7 @@ Usage
         Property            | Description                                | Required
         material            | name of a sub-dictionary of materials      | yes
         materials           | material dictionaries (sinterMaterial)     | yes
-        bridgeModel         | threeMicroContacts, smooth, nineMicroContacts: C of eq 2.4 for T_t, T_d | yes
+        C                   | threeMicroContacts, smooth, nineMicroContacts or a value: C of eq 2.4 for T_t, T_d | yes
         collisionVelocities | v_n list [m/s], > 0, at least one           | yes
         Tmin, Tmax          | temperature range [K], 0 < Tmin < Tmax      | yes
         nTemperatures       | points of the written curves, >= 2          | yes
@@ -269,8 +269,7 @@ int main(int argc, char *argv[])
 
     Info<< nl << "Material " << material.name() << ", rho " << material.rho()
         << " kg/m^3, Y " << material.Y() << " Pa, nu " << material.nu()
-        << "; bridge model " << solidBridge::surfaceModelNames[bridge.model()]
-        << " (C = " << bridge.C() << ")" << nl
+        << "; solid bridge C = " << bridge.C() << nl
         << "v_n for T_t: " << vn.first() << " m/s, for T_d: " << vn.last()
         << " m/s" << nl << endl;
 
@@ -364,8 +363,8 @@ int main(int argc, char *argv[])
         os  << "# " << p.name << ": d50 " << p.d << " m, m " << p.m
             << " kg, m g " << weight << " N; material " << material.name()
             << "; forces / (m g)" << nl
-            << "# T_t " << Tt << " K, T_d " << Td << " K (bridge model "
-            << solidBridge::surfaceModelNames[bridge.model()] << ")" << nl
+            << "# T_t " << Tt << " K, T_d " << Td << " K (solid bridge C = "
+            << bridge.C() << ")" << nl
             << "# T[K] T[C]";
         for (const scalar v : vn)
         {

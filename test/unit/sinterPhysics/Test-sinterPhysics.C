@@ -24,6 +24,12 @@ Description
     k_B = 1.380649e-23 J/K, T = 867.15 K:     x = 6.1696457339e-9 m
     Solid bridge per strength (2.4), C = 1.251: F/sigma = 1.4959863704e-16 m^2
 
+    Neck growth rate G = d(x^7)/dt = 56 gamma delta^4 D_s a^3/(k_B T):
+        G(a 16.85 um, 973.15 K) = 9.2679974548e-51 m^7/s
+        G(a 1 um, 1273.15 K)    = 3.2522600306e-51 m^7/s
+    C 0.8 given as a value, curvatureRadius 1 um, T = 1273.15 K, t = 0.01 s:
+        F_sb = C pi sigma(T) (G t)^(2/7) = 6.0274284848e-7 N
+
     Tolerance 1e-9 relative (the hand values carry 11 digits).
     Also: bridge force = sigma(T) F/sigma; C of the three surface models.
 */
@@ -107,6 +113,32 @@ int main(int argc, char *argv[])
         nine.force(d/2, 867.15, tc),
         (4e8 - 100*sqr(867.15))*1.4959863704e-16
     );
+
+    // Neck growth in time; C by value; a roughness length as curvature radius
+    check("G(16.85 um, 973.15 K) [m^7/s]", nine.neckGrowthRate(d/2, 973.15), 9.2679974548e-51);
+    check("G(1 um, 1273.15 K) [m^7/s]", nine.neckGrowthRate(1e-6, 1273.15), 3.2522600306e-51);
+    check
+    (
+        "F_sb from x^7 = G t equals F_sb(t)",
+        nine.forceFromNeck(nine.neckGrowthRate(d/2, 867.15)*tc, 867.15),
+        nine.force(d/2, 867.15, tc)
+    );
+    {
+        const solidBridge rough
+        (
+            hematite,
+            dictionary(IStringStream("C 0.8; curvatureRadius 1e-6;")())
+        );
+        check("C by value", rough.C(), 0.8);
+        check("F_sb(C 0.8, a 1 um, 1273.15 K, 0.01 s) [N]", rough.force(d/2, 1273.15, 0.01), 6.0274284848e-7);
+        const solidBridge named
+        (
+            hematite,
+            dictionary(IStringStream("C smooth; curvatureRadius particleRadius;")())
+        );
+        check("C by name (smooth)", named.C(), 1);
+        check("curvature radius = particle radius", named.curvatureRadius(d/2), d/2);
+    }
 
     check("C threeMicroContacts", solidBridge::coefficient(solidBridge::surfaceModel::threeMicroContacts), 0.417);
     check("C smooth", solidBridge::coefficient(solidBridge::surfaceModel::smooth), 1);

@@ -39,8 +39,8 @@ Foam::solidBridge::solidBridge
 )
 :
     material_(material),
-    model_(model),
-    C_(coefficient(model))
+    C_(coefficient(model)),
+    a_(0)
 {}
 
 
@@ -50,8 +50,83 @@ Foam::solidBridge::solidBridge
     const dictionary& dict
 )
 :
-    solidBridge(material, surfaceModelNames.get("bridgeModel", dict))
-{}
+    material_(material),
+    C_(0),
+    a_(0)
+{
+    // C: a surface model's name or a value
+    ITstream& is = dict.lookup("C");
+    const token t(is);
+    if (t.isWord())
+    {
+        if (!surfaceModelNames.found(t.wordToken()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown C " << t.wordToken() << nl
+                << "Valid names are " << surfaceModelNames
+                << " (or a value >= 0)" << exit(FatalIOError);
+        }
+        C_ = coefficient(surfaceModelNames[t.wordToken()]);
+    }
+    else if (t.isNumber())
+    {
+        C_ = t.number();
+        if (C_ < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "C " << C_ << " must be >= 0" << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "C must be a surface model " << surfaceModelNames
+            << " or a value >= 0, not " << t << exit(FatalIOError);
+    }
+
+    // Curvature radius: the particle radius or a roughness length
+    if (dict.found("curvatureRadius"))
+    {
+        ITstream& as = dict.lookup("curvatureRadius");
+        const token at(as);
+        if (at.isWord() && at.wordToken() == "particleRadius")
+        {
+            a_ = 0;
+        }
+        else if (at.isNumber() && at.number() > 0)
+        {
+            a_ = at.number();
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "curvatureRadius must be particleRadius or a length > 0"
+                   " [m], not " << at << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::scalar Foam::solidBridge::neckGrowthRate
+(
+    const scalar a,
+    const scalar T
+) const
+{
+    return
+        56*material_.gamma()*pow4(material_.delta())*material_.Ds(T)
+       *pow3(a)/(kB*T);
+}
+
+
+Foam::scalar Foam::solidBridge::forceFromNeck
+(
+    const scalar x7,
+    const scalar T
+) const
+{
+    return C_*constant::mathematical::pi*material_.sigma(T)*pow(x7, 2.0/7.0);
+}
 
 
 Foam::scalar Foam::solidBridge::neckRadius
@@ -61,13 +136,7 @@ Foam::scalar Foam::solidBridge::neckRadius
     const scalar t
 ) const
 {
-    const scalar delta = material_.delta();
-
-    return pow
-    (
-        56*material_.gamma()*pow4(delta)*material_.Ds(T)*pow3(a)*t/(kB*T),
-        1.0/7.0
-    );
+    return pow(neckGrowthRate(a, T)*t, 1.0/7.0);
 }
 
 
@@ -89,6 +158,6 @@ Foam::scalar Foam::solidBridge::forcePerStrength
     const scalar t
 ) const
 {
-    // C pi x^2 with the curvature radius a = r_p (eq 2.4)
-    return C_*constant::mathematical::pi*sqr(neckRadius(rp, T, t));
+    // C pi x^2 with the curvature radius a (r_p for smooth particles, eq 2.4)
+    return C_*constant::mathematical::pi*sqr(neckRadius(curvatureRadius(rp), T, t));
 }
