@@ -61,6 +61,8 @@ Foam::demEngine::demEngine
 )
 :
     law_(contactLaw::New(dict, coarseGrainFactor)),
+    cohesion_(cohesionModel::New(dict, law_(), coarseGrainFactor)),
+    time_(0),
     skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
     skin_(0),
     listsValid_(false),
@@ -287,9 +289,11 @@ void Foam::demEngine::computeForces(const scalar deltaT)
     }
 
     law_->pairForces(P, pairs_, deltaT);
+    cohesion_->pairForces(P, pairs_, deltaT, time_);
 
     walls_.update(P, wallContacts_);
     law_->wallForces(P, wallContacts_, deltaT);
+    cohesion_->wallForces(P, wallContacts_, deltaT, time_);
 }
 
 
@@ -348,6 +352,7 @@ void Foam::demEngine::step(const scalar deltaT)
         buildLists();
     }
 
+    time_ += deltaT;
     computeForces(deltaT);
 
     // Fresh pointers: choosing the ghosts may have reallocated the lists
@@ -377,6 +382,33 @@ Foam::label Foam::demEngine::nPairContacts() const
             c.history.active()
          && (c.j < nL || P.identity[c.i] < P.identity[c.j])
         )
+        {
+            ++count;
+        }
+    }
+    return count;
+}
+
+
+Foam::label Foam::demEngine::nBridgedContacts() const
+{
+    const demParticles& P = particles_;
+    const label nL = nLocal();
+    label count = 0;
+    for (const contactPair& c : pairs_)
+    {
+        if
+        (
+            c.history.active() && c.history.bridge > 0
+         && (c.j < nL || P.identity[c.i] < P.identity[c.j])
+        )
+        {
+            ++count;
+        }
+    }
+    for (const wallContact& c : wallContacts_)
+    {
+        if (c.history.active() && c.history.bridge > 0)
         {
             ++count;
         }

@@ -81,7 +81,7 @@ void Foam::demHalo::select
         {
             os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
                 << P.radius[i] << P.mass[i] << P.inertia[i]
-                << P.identity[i] << P.origin[i];
+                << P.temperature[i] << P.identity[i] << P.origin[i];
         }
     }
     buffers.finishedSends();
@@ -96,10 +96,10 @@ void Foam::demHalo::select
         for (label g = 0; g < n; ++g)
         {
             vector x, v, w;
-            scalar r, m, I;
+            scalar r, m, I, T;
             label id;
             labelPair origin;
-            is >> x >> v >> w >> r >> m >> I >> id >> origin;
+            is >> x >> v >> w >> r >> m >> I >> T >> id >> origin;
 
             P.position.append(x);
             P.velocity.append(v);
@@ -110,6 +110,7 @@ void Foam::demHalo::select
             P.radius.append(r);
             P.mass.append(m);
             P.inertia.append(I);
+            P.temperature.append(T);
             P.identity.append(id);
             P.origin.append(origin);
         }

@@ -26,6 +26,28 @@ void Foam::DEMCloud<CloudType>::motion
 }
 
 
+namespace Foam
+{
+namespace DEMCloudDetail
+{
+
+//- A parcel's temperature [K] if it has one (thermo parcels), else 0
+template<class ParcelType>
+inline auto temperature(const ParcelType& p, int) -> decltype(p.T())
+{
+    return p.T();
+}
+
+template<class ParcelType>
+inline scalar temperature(const ParcelType&, long)
+{
+    return 0;
+}
+
+} // End namespace DEMCloudDetail
+} // End namespace Foam
+
+
 template<class CloudType>
 template<class TrackCloudType>
 void Foam::DEMCloud<CloudType>::demMotion
@@ -75,6 +97,7 @@ void Foam::DEMCloud<CloudType>::demMotion
         P.origin[i] = labelPair(p.origProc(), p.origId());
         P.mass[i] = m;
         P.inertia[i] = I;
+        P.temperature[i] = DEMCloudDetail::temperature(p, 0);
         P.externalForce[i] = m*(p.U() - U0)/dt;
 
         p.U() = U0;
@@ -118,6 +141,7 @@ void Foam::DEMCloud<CloudType>::demMotion
     const label nSub = dem.nSubSteps(dt);
     const scalar dtDEM = dt/nSub;
 
+    engine.setTime(this->db().time().value() - dt);
     engine.initialise();
     for (label k = 0; k < nSub; ++k)
     {
@@ -197,7 +221,13 @@ void Foam::DEMCloud<CloudType>::demMotion
         << returnReduce(engine.nPairContacts(), sumOp<label>())
         << " particle-particle and "
         << returnReduce(engine.nWallContacts(), sumOp<label>())
-        << " particle-wall contacts" << endl;
+        << " particle-wall contacts";
+    if (engine.cohesion().active())
+    {
+        Info<< ", " << returnReduce(engine.nBridgedContacts(), sumOp<label>())
+            << " bridged";
+    }
+    Info<< endl;
 
     // 4. One track per parcel along its DEM displacement
     demActive_ = true;

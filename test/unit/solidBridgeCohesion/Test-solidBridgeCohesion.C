@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    Test-solidBridgeCohesion
+
+Description
+    The DEM engine's solidBridge cohesion model against thesis eq 5.10.
+    Two hematite spheres (primary radius 29 um, 1e-3 r overlap) are held in
+    contact (masses 1e30 kg) at a fixed temperature for t = N dt_DEM,
+    dt_DEM = 1e-6 s. The cohesive force is the total force on particle 0
+    minus that of the same engine with cohesionModel none, projected on the
+    line of centres (positive: attractive). Reference, evaluated here
+    independently of libsinterPhysics:
+
+        F = K^(12/7) C pi sigma(T) (56 gamma delta^4 D_s(T) r_p^3 c t/(k_B T))^(2/7)
+
+    gamma 1 N/m, delta 1.38e-9 m, D_s = 2.8e-13 exp(-1.74e5/(R T)) up to
+    1173.15 K (900 degC) and 1.6e5 exp(-5.79e5/(R T)) above, sigma(T) =
+    415377459.1 - 173.6283211 T^2 Pa (the defluidizationMap calibration),
+    c = (Y*_DEM/Y*_real)^(2/5) = (1e6/359e9)^(2/5) (eq 5.14), r_p = r/K.
+
+    Checks (tolerances stated with each):
+      - F(t = 0.01 s) within 0.1 % of eq 5.10 at 973.15, 1173.15 and
+        1273.15 K (700, 900, 1000 degC: both sides of the switch), C = 1;
+      - the contact time in the history is N dt_DEM (1e-12 relative);
+      - x^7 proportional to t: x^7(0.01 s) = 2 x^7(0.005 s) (1e-9);
+      - C = 0 and a run that ends before the activation time: no force;
+      - activation at 0.0050005 s: the neck grows over the last 5000
+        steps only, F = eq 5.10 with t = 0.005 s (0.1 %);
+      - coarse graining: Pi = F/(r^2 rho v0^2) is the same for K = 4 at
+        t = 4 ms and K = 6 at t = 6 ms, the same t* = t v0/r (1e-9).
+*/
+
+#include "argList.H"
+#include "IStringStream.H"
+#include "demEngine.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam;
+
+namespace
+{
+
+bool ok = true;
+
+void check
+(
+    const word& what,
+    const scalar value,
+    const scalar reference,
+    const scalar tolerance
+)
+{
+    const scalar rel =
+        reference == 0 ? mag(value) : mag(value - reference)/mag(reference);
+    const bool pass = rel <= tolerance;
+    Info<< (pass ? "ok   " : "FAIL ") << what << ": " << value
+        << " (reference " << reference << ", rel. error " << rel
+        << ", tolerance " << tolerance << ")" << nl;
+    ok = ok && pass;
+}
+
+
+const scalar rPrimary = 29e-6;
+const scalar dt = 1e-6;
+
+
+dictionary engineDict(const word& cohesion, const string& C, const scalar tAct)
+{
+    return dictionary
+    (
+        IStringStream
+        (
+            "contactLaw HertzMindlin;"
+            "particle { youngsModulus 1e6; realYoungsModulus 359e9; poissonsRatio 0.12; }"
+            "wall { youngsModulus 1e6; realYoungsModulus 359e9; poissonsRatio 0.12; }"
+            "particleParticle { restitution 0.9; friction 0.5; }"
+            "particleWall { restitution 0.9; friction 0.5; }"
+            "cohesionModel " + cohesion + ";"
+            "solidBridgeCoeffs"
+            "{"
+            "    C " + C + "; activationTime " + Foam::name(tAct) + ";"
+            "    material"
+            "    {"
+            "        density 5240; youngsModulus 359e9; poissonsRatio 0.12;"
+            "        surfaceTension 1; latticeConstant 1.38e-9;"
+            "        surfaceDiffusion ((1173.15 2.8e-13 1.74e5) (1e30 1.6e5 5.79e5));"
+            "        tensileStrength polynomial ((415377459.1 0) (-173.6283211 2));"
+            "    }"
+            "}"
+        )()
+    );
+}
+
+
+//- Two spheres of K r_p held in contact at T for n steps
+void hold(demEngine& engine, const scalar K, const scalar T)
+{
+    const scalar r = K*rPrimary;
+    demParticles& P = engine.particles();
+    P.clear();
+    P.append(vector::zero, Zero, Zero, r, 5240, 0);
+    P.append(vector(2*r - 1e-3*r, 0, 0), Zero, Zero, r, 5240, 1);
+    forAll(P.mass, i)
+    {
+        P.mass[i] = 1e30;
+        P.inertia[i] = 1e30;
+        P.temperature[i] = T;
+    }
+}
+
+
+struct result
+{
+    scalar force;
+    scalar x7;
+    scalar duration;
+};
+
+
+//- Cohesive force after n steps: engine with cohesion minus without
+result run
+(
+    const scalar K,
+    const scalar T,
+    const label n,
+    const string& C = "smooth",
+    const scalar tAct = 0
+)
+{
+    demEngine with(engineDict("solidBridge", C, tAct), K);
+    demEngine without(engineDict("none", C, tAct), K);
+    hold(with, K, T);
+    hold(without, K, T);
+    for (label k = 0; k < n; ++k)
+    {
+        with.step(dt);
+        without.step(dt);
+    }
+    const vector n01 =
+        normalised(with.particles().position[1] - with.particles().position[0]);
+    const vector F = with.particles().force[0] - without.particles().force[0];
+    const contactHistory& h = with.pairs()[0].history;
+    return {F & n01, h.bridge, h.duration};
+}
+
+
+//- eq 5.10 at constant T, independent of the library
+scalar reference(const scalar K, const scalar T, const scalar t, const scalar C)
+{
+    const scalar R = 8.314462618;
+    const scalar kB = 1.380649e-23;
+    const scalar Ds =
+        T <= 1173.15
+      ? 2.8e-13*std::exp(-1.74e5/(R*T))
+      : 1.6e5*std::exp(-5.79e5/(R*T));
+    const scalar sigma = 415377459.1 - 173.6283211*T*T;
+    const scalar c = std::pow(1e6/359e9, 0.4);
+    const scalar x7 = 56*1*std::pow(1.38e-9, 4)*Ds*std::pow(rPrimary, 3)*c*t/(kB*T);
+    return
+        std::pow(K, 12.0/7.0)*C*constant::mathematical::pi*sigma
+       *std::pow(x7, 2.0/7.0);
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList args(argc, argv);
+    Info().precision(10);
+
+    // eq 5.10 across the 900 degC switch, K = 1, C = 1 (smooth)
+    for (const scalar T : {973.15, 1173.15, 1273.15})
+    {
+        const result r = run(1, T, 10000);
+        check("F_sb(" + Foam::name(T) + " K, 0.01 s) [N]", r.force, reference(1, T, 0.01, 1), 1e-3);
+        check("contact time [s]", r.duration, 10000*dt, 1e-12);
+    }
+
+    // x^7 grows linearly in time
+    check
+    (
+        "x^7(0.01 s)/x^7(0.005 s)",
+        run(1, 1273.15, 10000).x7/run(1, 1273.15, 5000).x7,
+        2,
+        1e-9
+    );
+
+    // No force for C = 0 or before the activation time
+    check("F_sb with C = 0 [N]", run(1, 1273.15, 1000, "0").force, 0, 0);
+    check("F_sb before activation [N]", run(1, 1273.15, 1000, "smooth", 0.02).force, 0, 0);
+
+    // Activation half-way: the neck grows over the last 5000 steps
+    check
+    (
+        "F_sb, activation at 0.0050005 s [N]",
+        run(1, 1273.15, 10000, "smooth", 0.0050005).force,
+        reference(1, 1273.15, 0.005, 1),
+        1e-3
+    );
+
+    // Nine micro-contacts: C = 1.251
+    check("F_sb(C nineMicroContacts) [N]", run(1, 973.15, 2000, "nineMicroContacts").force, reference(1, 973.15, 0.002, 1.251), 1e-3);
+
+    // Coarse graining keeps Pi at the same t* = t v0/r (v0 = 1 m/s)
+    const scalar Pi4 = run(4, 1273.15, 4000).force/(sqr(4*rPrimary)*5240);
+    const scalar Pi6 = run(6, 1273.15, 6000).force/(sqr(6*rPrimary)*5240);
+    check("Pi(K 6, t* equal)/Pi(K 4)", Pi6/Pi4, 1, 1e-9);
+
+    if (!ok)
+    {
+        FatalErrorInFunction << "solid-bridge checks failed" << exit(FatalError);
+    }
+    Info<< "all solid-bridge checks passed" << nl;
+    return 0;
+}
