@@ -48,14 +48,14 @@ scalar timeCorrection(const contactMaterial& a, const contactMaterial& b)
 }
 
 
-//- Temperature of a contact, checked: kelvin, > 0
+//- Temperature of a contact, checked: kelvin, at least 200 K
 inline scalar checkedTemperature(const scalar T)
 {
-    if (!(T > 0))
+    if (!(T >= 200))
     {
         FatalErrorInFunction
-            << "contact temperature " << T << " K: particle temperatures"
-               " must be positive, in kelvin" << exit(FatalError);
+            << "contact temperature " << T << " K is below 200 K: particle"
+               " temperatures are in kelvin" << exit(FatalError);
     }
     return T;
 }

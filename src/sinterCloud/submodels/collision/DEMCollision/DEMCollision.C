@@ -115,6 +115,21 @@ Foam::DEMCollision<CloudType>::DEMCollision
             << exit(FatalIOError);
     }
 
+    // Sintering laws take kelvin: a temperature below 200 K was given in C
+    const dictionary& constProps = owner.constProps().dict();
+    if (engine_.cohesion().active() && constProps.found("T0"))
+    {
+        const scalar T0 = constProps.get<scalar>("T0");
+        if (T0 < 200)
+        {
+            FatalIOErrorInFunction(constProps)
+                << "Keyword T0 = " << T0 << " K in " << constProps.name()
+                << " is below 200 K: temperatures are in kelvin"
+                << " (cohesionModel " << coeffs.get<word>("cohesionModel")
+                << ")" << exit(FatalIOError);
+        }
+    }
+
     if (Pstream::parRun())
     {
         engine_.setHalo
