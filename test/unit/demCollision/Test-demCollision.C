@@ -35,6 +35,7 @@ Description
 */
 
 #include "argList.H"
+#include "unitCheck.H"
 #include "IStringStream.H"
 #include "demEngine.H"
 #include "HertzCollision.H"
@@ -45,23 +46,7 @@ using namespace Foam;
 namespace
 {
 
-bool ok = true;
-
-void check
-(
-    const word& what,
-    const scalar value,
-    const scalar reference,
-    const scalar tolerance
-)
-{
-    const scalar rel = mag(value - reference)/mag(reference);
-    const bool pass = rel <= tolerance;
-    Info<< (pass ? "ok   " : "FAIL ") << what << ": " << value
-        << " (expected " << reference << ", relative difference " << rel
-        << ", tolerance " << tolerance << ")" << nl;
-    ok = ok && pass;
-}
+using unitTest::check;
 
 const scalar rho = 2500;
 const scalar r = 0.5e-3;
@@ -481,7 +466,7 @@ int main(int argc, char *argv[])
             << ". Valid: headOn wall oblique settledBed" << exit(FatalError);
     }
 
-    if (!ok)
+    if (unitTest::nFailed())
     {
         FatalErrorInFunction << "Test-demCollision -case " << which
             << " failed" << exit(FatalError);

@@ -33,6 +33,7 @@ Description
 */
 
 #include "argList.H"
+#include "unitCheck.H"
 #include "IStringStream.H"
 #include "demEngine.H"
 #include "mathematicalConstants.H"
@@ -42,24 +43,7 @@ using namespace Foam;
 namespace
 {
 
-bool ok = true;
-
-void check
-(
-    const word& what,
-    const scalar value,
-    const scalar reference,
-    const scalar tolerance
-)
-{
-    const scalar rel =
-        reference == 0 ? mag(value) : mag(value - reference)/mag(reference);
-    const bool pass = rel <= tolerance;
-    Info<< (pass ? "ok   " : "FAIL ") << what << ": " << value
-        << " (reference " << reference << ", rel. error " << rel
-        << ", tolerance " << tolerance << ")" << nl;
-    ok = ok && pass;
-}
+using unitTest::check;
 
 
 const scalar rPrimary = 29e-6;
@@ -210,7 +194,7 @@ int main(int argc, char *argv[])
     const scalar Pi6 = run(6, 1273.15, 6000).force/(sqr(6*rPrimary)*5240);
     check("Pi(K 6, t* equal)/Pi(K 4)", Pi6/Pi4, 1, 1e-9);
 
-    if (!ok)
+    if (unitTest::nFailed())
     {
         FatalErrorInFunction << "solid-bridge checks failed" << exit(FatalError);
     }

@@ -60,6 +60,65 @@ inline scalar checkedTemperature(const scalar T)
     return T;
 }
 
+
+//- The temperature-dependent factors of the bridges over one step,
+//  evaluated again only when the contact temperature changes from one
+//  contact to the next (once per step in a bed at a uniform temperature)
+class bridgeFactors
+{
+    const Foam::solidBridge& law_;
+
+    //- Contact-time correction c [-] and DEM step [s]
+    const scalar c_;
+    const scalar deltaT_;
+
+    //- K^(12/7)
+    const scalar scale_;
+
+    scalar T_ = -1;
+
+    //- Growth of x^7 over the step per a^3 [m^4]
+    scalar growth_ = 0;
+
+    //- Force per x^2 [N/m^2]
+    scalar strength_ = 0;
+
+public:
+
+    bridgeFactors
+    (
+        const Foam::solidBridge& law,
+        const scalar c,
+        const scalar deltaT,
+        const scalar K
+    )
+    :
+        law_(law),
+        c_(c),
+        deltaT_(deltaT),
+        scale_(std::pow(K, 12.0/7.0))
+    {}
+
+    //- Set the factors for a contact at temperature T [K]
+    void at(const scalar T)
+    {
+        if (T != T_)
+        {
+            checkedTemperature(T);
+            growth_ = c_*law_.neckGrowthRate(1, T)*deltaT_;
+            strength_ = scale_*law_.forceFromNeck(1, T);
+            T_ = T;
+        }
+    }
+
+    //- Grow a neck of curvature radius a [m]; the bridge force [N]
+    scalar grow(scalar& x7, const scalar a) const
+    {
+        x7 += growth_*pow3(a);
+        return strength_*std::pow(x7, 2.0/7.0);
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -105,16 +164,11 @@ void Foam::cohesionModels::solidBridge::pairForces
         return;
     }
 
-    const scalar scale = std::pow(K_, 12.0/7.0);
     const vector* __restrict__ x = P.position.cdata();
     const scalar* __restrict__ r = P.radius.cdata();
     const scalar* __restrict__ T = P.temperature.cdata();
     vector* __restrict__ F = P.force.data();
-
-    // Temperature-dependent factors, re-evaluated when T changes
-    scalar Tlast = -1;
-    scalar growth = 0;      // c G/a^3 dt [m^4]
-    scalar strength = 0;    // K^(12/7) C pi sigma [N/m^2]
+    bridgeFactors factors(law_, cPair_, deltaT, K_);
 
     for (contactPair& c : pairs)
     {
@@ -125,22 +179,15 @@ void Foam::cohesionModels::solidBridge::pairForces
         const label i = c.i;
         const label j = c.j;
 
-        const scalar Tc = 0.5*(T[i] + T[j]);
-        if (Tc != Tlast)
-        {
-            checkedTemperature(Tc);
-            growth = cPair_*law_.neckGrowthRate(1, Tc)*deltaT;
-            strength = scale*law_.forceFromNeck(1, Tc);
-            Tlast = Tc;
-        }
+        factors.at(0.5*(T[i] + T[j]));
 
         // Primary particles' radius of the pair, r_p for equal spheres
         const scalar rp = 2*r[i]*r[j]/((r[i] + r[j])*K_);
-        c.history.bridge += growth*pow3(law_.curvatureRadius(rp));
+        const scalar Fsb =
+            factors.grow(c.history.bridge, law_.curvatureRadius(rp));
 
         const vector d = x[j] - x[i];
-        const vector n = d/mag(d);
-        const vector f = (strength*std::pow(c.history.bridge, 2.0/7.0))*n;
+        const vector f = Fsb*(d/mag(d));
         F[i] += f;
         F[j] -= f;
     }
@@ -160,14 +207,10 @@ void Foam::cohesionModels::solidBridge::wallForces
         return;
     }
 
-    const scalar scale = std::pow(K_, 12.0/7.0);
     const scalar* __restrict__ r = P.radius.cdata();
     const scalar* __restrict__ T = P.temperature.cdata();
     vector* __restrict__ F = P.force.data();
-
-    scalar Tlast = -1;
-    scalar growth = 0;
-    scalar strength = 0;
+    bridgeFactors factors(law_, cWall_, deltaT, K_);
 
     for (wallContact& c : contacts)
     {
@@ -178,19 +221,12 @@ void Foam::cohesionModels::solidBridge::wallForces
         const label i = c.i;
 
         // The wall has the particle's temperature and properties
-        const scalar Tc = T[i];
-        if (Tc != Tlast)
-        {
-            checkedTemperature(Tc);
-            growth = cWall_*law_.neckGrowthRate(1, Tc)*deltaT;
-            strength = scale*law_.forceFromNeck(1, Tc);
-            Tlast = Tc;
-        }
-
-        c.history.bridge += growth*pow3(law_.curvatureRadius(r[i]/K_));
+        factors.at(T[i]);
+        const scalar Fsb =
+            factors.grow(c.history.bridge, law_.curvatureRadius(r[i]/K_));
 
         // Towards the wall: c.normal points from the wall to the particle
-        const vector f = -(strength*std::pow(c.history.bridge, 2.0/7.0))*c.normal;
+        const vector f = -Fsb*c.normal;
         F[i] += f;
         c.force += f;
     }
