@@ -284,7 +284,8 @@ void Foam::demEngine::computeForces(const scalar deltaT)
     demParticles& P = particles_;
     forAll(P.force, i)
     {
-        P.force[i] = P.externalForce[i];
+        P.dragForce[i] = P.dragCoeff[i]*(P.fluidVelocity[i] - P.velocity[i]);
+        P.force[i] = P.externalForce[i] + P.dragForce[i];
         P.torque[i] = Zero;
     }
 
@@ -327,11 +328,15 @@ void Foam::demEngine::step(const scalar deltaT)
     const scalar* __restrict__ m = P.mass.cdata();
     const scalar* __restrict__ I = P.inertia.cdata();
 
+    vector* __restrict__ Jd = P.dragImpulse.data();
+    const vector* __restrict__ Fd = P.dragForce.cdata();
+
     for (label i = 0; i < nL; ++i)
     {
         v[i] += (half/m[i])*F[i];
         w[i] += (half/I[i])*T[i];
         x[i] += deltaT*v[i];
+        Jd[i] += half*Fd[i];
     }
 
     if (halo_.valid())
@@ -362,10 +367,13 @@ void Foam::demEngine::step(const scalar deltaT)
     const vector* __restrict__ T2 = P.torque.cdata();
     const scalar* __restrict__ m2 = P.mass.cdata();
     const scalar* __restrict__ I2 = P.inertia.cdata();
+    vector* __restrict__ Jd2 = P.dragImpulse.data();
+    const vector* __restrict__ Fd2 = P.dragForce.cdata();
     for (label i = 0; i < nL; ++i)
     {
         v2[i] += (half/m2[i])*F2[i];
         w2[i] += (half/I2[i])*T2[i];
+        Jd2[i] += half*Fd2[i];
     }
 }
 

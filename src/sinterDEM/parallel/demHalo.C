@@ -107,6 +107,10 @@ void Foam::demHalo::select
             P.force.append(Zero);
             P.torque.append(Zero);
             P.externalForce.append(Zero);
+            P.dragCoeff.append(0);
+            P.fluidVelocity.append(Zero);
+            P.dragForce.append(Zero);
+            P.dragImpulse.append(Zero);
             P.radius.append(r);
             P.mass.append(m);
             P.inertia.append(I);

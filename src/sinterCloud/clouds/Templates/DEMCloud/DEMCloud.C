@@ -64,10 +64,17 @@ void Foam::DEMCloud<CloudType>::demMotion
     demParticles& P = engine.particles();
     P.clear();
 
-    // 1. Fluid forces and heat over the step, at the start positions; the
-    //    parcels' velocity change becomes the external force of the DEM
+    // 1. Fluid forces and heat over the step, at the start positions. The
+    //    drag (coupled, Sp (U_c - v)) is handed to the DEM with the gas
+    //    velocity, to act on the parcel's actual velocity in every sub-step;
+    //    the other forces become the external force. calc() does the heat
+    //    and the gas's implicit drag coefficient; its momentum transfer,
+    //    which assumes free flight over the step, is replaced by the DEM's
+    //    drag impulse (step 3).
     DynamicList<parcelType*> parcels(this->size());
+    DynamicList<label> startCells(this->size());
     const globalIndex identities(this->size());
+    const bool coupled = this->solution().coupled();
 
     for (parcelType& p : cloud)
     {
@@ -79,7 +86,18 @@ void Foam::DEMCloud<CloudType>::demMotion
         {
             p.cellValueSourceCorrection(cloud, td, dt);
         }
+
+        const scalar m0 = p.mass();
+        const scalar Re = p.Re(td);
+        const forceSuSp Fcp =
+            cloud.forces().calcCoupled(p, td, dt, m0, Re, td.muc());
+        const forceSuSp Fncp =
+            cloud.forces().calcNonCoupled(p, td, dt, m0, Re, td.muc());
+
+        const label celli = p.cell();
+        const vector UTrans0 = this->UTrans()[celli];
         p.calc(cloud, td, dt);
+        this->UTrans()[celli] = UTrans0;
 
         const scalar m = p.mass();
         const scalar r = 0.5*p.d();
@@ -98,10 +116,13 @@ void Foam::DEMCloud<CloudType>::demMotion
         P.mass[i] = m;
         P.inertia[i] = I;
         P.temperature[i] = DEMCloudDetail::temperature(p, 0);
-        P.externalForce[i] = m*(p.U() - U0)/dt;
+        P.externalForce[i] = Fcp.Su() + Fncp.Su();
+        P.dragCoeff[i] = Fcp.Sp();
+        P.fluidVelocity[i] = td.Uc();
 
         p.U() = U0;
         parcels.append(&p);
+        startCells.append(celli);
     }
 
     // Ghosts of the neighbouring processors (decomposed runs)
@@ -148,10 +169,15 @@ void Foam::DEMCloud<CloudType>::demMotion
         engine.step(dtDEM);
     }
 
-    // 3. Results onto the parcels, histories of the active contacts
+    // 3. Results onto the parcels, histories of the active contacts; the
+    //    gas loses the momentum the drag gave the parcels
     forAll(parcels, i)
     {
         parcelType& p = *parcels[i];
+        if (coupled)
+        {
+            this->UTrans()[startCells[i]] -= p.nParticle()*P.dragImpulse[i];
+        }
         p.displacement() = P.position[i] - p.position();
         p.U() = P.velocity[i];
         p.angularMomentum() = P.inertia[i]*P.angularVelocity[i];
