@@ -101,22 +101,12 @@ void Foam::demHalo::select
             labelPair origin;
             is >> x >> v >> w >> r >> m >> I >> T >> id >> origin;
 
-            P.position.append(x);
-            P.velocity.append(v);
-            P.angularVelocity.append(w);
-            P.force.append(Zero);
-            P.torque.append(Zero);
-            P.externalForce.append(Zero);
-            P.dragCoeff.append(0);
-            P.fluidVelocity.append(Zero);
-            P.dragForce.append(Zero);
-            P.dragImpulse.append(Zero);
-            P.radius.append(r);
-            P.mass.append(m);
-            P.inertia.append(I);
-            P.temperature.append(T);
-            P.identity.append(id);
-            P.origin.append(origin);
+            // A particle with zero forces, then the data it carries
+            const label i = P.append(x, v, w, r, 1, id);
+            P.mass[i] = m;
+            P.inertia[i] = I;
+            P.temperature[i] = T;
+            P.origin[i] = origin;
         }
     }
 }
