@@ -189,6 +189,28 @@ int main(int argc, char *argv[])
     // Nine micro-contacts: C = 1.251
     check("F_sb(C nineMicroContacts) [N]", run(1, 973.15, 2000, "nineMicroContacts").force, reference(1, 973.15, 0.002, 1.251), 1e-3);
 
+    // The contact ends after 1000 steps: the history resets (no bridge),
+    // and a new contact starts again from one step (eq 5.11)
+    {
+        demEngine e(engineDict("solidBridge", "smooth", 0), 1);
+        hold(e, 1, 1273.15);
+        for (label k = 0; k < 1000; ++k)
+        {
+            e.step(dt);
+        }
+        vector& x1 = e.particles().position[1];
+        const vector touching = x1;
+        x1 += vector(1e-2*rPrimary, 0, 0);
+        e.step(dt);
+        check("contacts after separating", e.nPairContacts(), 0, 0);
+        check("bridged contacts after separating", e.nBridgedContacts(), 0, 0);
+        x1 = touching;
+        e.step(dt);
+        const contactHistory& h = e.pairs()[0].history;
+        check("contact time of the new contact [s]", h.duration, dt, 1e-12);
+        check("x^7 of the new contact/one step's", h.bridge, run(1, 1273.15, 1).x7, 1e-12);
+    }
+
     // Coarse graining keeps Pi at the same t* = t v0/r (v0 = 1 m/s)
     const scalar Pi4 = run(4, 1273.15, 4000).force/(sqr(4*rPrimary)*5240);
     const scalar Pi6 = run(6, 1273.15, 6000).force/(sqr(6*rPrimary)*5240);

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "sinterMaterial.H"
+#include "TableBase.H"
+#include "IOmanip.H"
 
 namespace
 {
@@ -40,12 +42,33 @@ Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
     gamma_(readRange(dict, "surfaceTension", 0, GREAT, "must be > 0 [N/m]")),
     delta_(readRange(dict, "latticeConstant", 0, GREAT, "must be > 0 [m]")),
     Ds_(dict),
-    sigma_(Function1<scalar>::New("tensileStrength", dict))
-{}
+    sigma_(Function1<scalar>::New("tensileStrength", dict)),
+    sigmaTlow_(-GREAT),
+    sigmaThigh_(GREAT),
+    dict_(dict)
+{
+    // A table holds sigma only over the temperatures it lists
+    typedef Function1Types::TableBase<scalar> tableType;
+    if (isA<tableType>(sigma_()))
+    {
+        const scalarField T(refCast<const tableType>(sigma_()).x());
+        sigmaTlow_ = min(T);
+        sigmaThigh_ = max(T);
+    }
+}
 
 
 Foam::scalar Foam::sinterMaterial::sigma(const scalar T) const
 {
+    if (T < sigmaTlow_ || T > sigmaThigh_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << setprecision(6)
+            << "The tensileStrength table covers "
+            << sigmaTlow_ << " to " << sigmaThigh_ << " K, not the temperature "
+            << T << " K; extend tensileStrength in " << dict_.name()
+            << " (temperatures in kelvin)" << exit(FatalIOError);
+    }
     const scalar s = sigma_->value(T);
 
     if (!(s > 0))
@@ -57,4 +80,11 @@ Foam::scalar Foam::sinterMaterial::sigma(const scalar T) const
     }
 
     return s;
+}
+
+
+void Foam::sinterMaterial::checkTemperature(const scalar T) const
+{
+    sigma(T);
+    Ds(T);
 }

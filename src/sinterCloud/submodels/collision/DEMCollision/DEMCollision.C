@@ -128,6 +128,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
                 << " (cohesionModel " << coeffs.get<word>("cohesionModel")
                 << ")" << exit(FatalIOError);
         }
+        engine_.cohesion().checkTemperature(T0);
     }
 
     if (Pstream::parRun())
