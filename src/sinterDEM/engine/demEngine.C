@@ -294,7 +294,7 @@ void Foam::demEngine::computeForces(const scalar deltaT)
 
     walls_.update(P, wallContacts_);
     law_->wallForces(P, wallContacts_, deltaT);
-    cohesion_->wallForces(P, wallContacts_, deltaT, time_);
+    cohesion_->wallForces(P, wallContacts_, walls_, deltaT, time_);
 }
 
 

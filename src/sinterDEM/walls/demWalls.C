@@ -287,3 +287,15 @@ void Foam::demWalls::update
         s = e;
     }
 }
+
+
+void Foam::demWalls::setTemperature(const scalarField& T)
+{
+    if (T.size() != faces_.size())
+    {
+        FatalErrorInFunction
+            << T.size() << " wall temperatures for " << faces_.size()
+            << " wall faces" << exit(FatalError);
+    }
+    temperature_ = T;
+}

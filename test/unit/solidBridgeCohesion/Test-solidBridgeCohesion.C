@@ -50,7 +50,13 @@ const scalar rPrimary = 29e-6;
 const scalar dt = 1e-6;
 
 
-dictionary engineDict(const word& cohesion, const string& C, const scalar tAct)
+dictionary engineDict
+(
+    const word& cohesion,
+    const string& C,
+    const scalar tAct,
+    const word& wallTemperature = "wall"
+)
 {
     return dictionary
     (
@@ -65,6 +71,7 @@ dictionary engineDict(const word& cohesion, const string& C, const scalar tAct)
             "solidBridgeCoeffs"
             "{"
             "    C " + C + "; activationTime " + Foam::name(tAct) + ";"
+            "    wallTemperature " + wallTemperature + ";"
             "    material"
             "    {"
             "        density 5240; youngsModulus 359e9; poissonsRatio 0.12;"
@@ -127,6 +134,54 @@ result run
     const vector F = with.particles().force[0] - without.particles().force[0];
     const contactHistory& h = with.pairs()[0].history;
     return {F & n01, h.bridge, h.duration};
+}
+
+
+//- Bridge force after n steps of a sphere of r_p held on a floor at Tw,
+//  the sphere at Tp: engine with cohesion minus without
+scalar wallRun
+(
+    const scalar Tp,
+    const scalar Tw,
+    const label n,
+    const word& wallTemperature
+)
+{
+    const scalar L = 10*rPrimary;
+    // One face at z = 0, its normal -z (out of the domain above it)
+    const pointField points
+    ({
+        point(0, 0, 0), point(0, L, 0), point(L, L, 0), point(L, 0, 0)
+    });
+    const faceList faces({face(labelList({0, 1, 2, 3}))});
+
+    scalar F[2];
+    for (const label k : {0, 1})
+    {
+        demEngine e
+        (
+            engineDict(k ? "none" : "solidBridge", "smooth", 0, wallTemperature),
+            1
+        );
+        e.setWalls(demWalls(points, faces));
+        e.setWallTemperature(scalarField(1, Tw));
+        demParticles& P = e.particles();
+        P.clear();
+        P.append
+        (
+            point(0.5*L, 0.5*L, rPrimary*(1 - 1e-3)), Zero, Zero, rPrimary, 5240, 0
+        );
+        P.mass[0] = 1e30;
+        P.inertia[0] = 1e30;
+        P.temperature[0] = Tp;
+        for (label s = 0; s < n; ++s)
+        {
+            e.step(dt);
+        }
+        F[k] = e.particles().force[0].z();
+    }
+    // Towards the wall: -z
+    return F[1] - F[0];
 }
 
 
@@ -210,6 +265,23 @@ int main(int argc, char *argv[])
         check("contact time of the new contact [s]", h.duration, dt, 1e-12);
         check("x^7 of the new contact/one step's", h.bridge, run(1, 1273.15, 1).x7, 1e-12);
     }
+
+    // A wall contact sinters at the wall's temperature (default) or at the
+    // particle's: a particle at 700 degC on a wall at 1000 degC
+    check
+    (
+        "F_sb, particle 973.15 K on a wall at 1273.15 K [N]",
+        wallRun(973.15, 1273.15, 10000, "wall"),
+        reference(1, 1273.15, 0.01, 1),
+        1e-3
+    );
+    check
+    (
+        "F_sb, the same with wallTemperature particle [N]",
+        wallRun(973.15, 1273.15, 10000, "particle"),
+        reference(1, 973.15, 0.01, 1),
+        1e-3
+    );
 
     // Coarse graining keeps Pi at the same t* = t v0/r (v0 = 1 m/s)
     const scalar Pi4 = run(4, 1273.15, 4000).force/(sqr(4*rPrimary)*5240);

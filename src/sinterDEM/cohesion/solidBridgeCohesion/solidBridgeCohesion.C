@@ -15,6 +15,17 @@ namespace cohesionModels
 }
 
 
+const Foam::Enum
+<
+    Foam::cohesionModels::solidBridge::wallTemperatureModel
+>
+Foam::cohesionModels::solidBridge::wallTemperatureModelNames
+({
+    { wallTemperatureModel::wall, "wall" },
+    { wallTemperatureModel::particle, "particle" },
+});
+
+
 namespace
 {
 
@@ -122,6 +133,24 @@ public:
 } // End anonymous namespace
 
 
+Foam::cohesionModels::solidBridge::wallTemperatureModel
+Foam::cohesionModels::solidBridge::readWallTemperature
+(
+    const dictionary& coeffs
+)
+{
+    const word name(coeffs.lookupOrDefault<word>("wallTemperature", "wall"));
+    if (!wallTemperatureModelNames.found(name))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Unknown wallTemperature " << name << " in " << coeffs.name()
+            << nl << "Valid wallTemperature values are "
+            << wallTemperatureModelNames << exit(FatalIOError);
+    }
+    return wallTemperatureModelNames[name];
+}
+
+
 Foam::cohesionModels::solidBridge::solidBridge
 (
     const dictionary& dict,
@@ -135,7 +164,8 @@ Foam::cohesionModels::solidBridge::solidBridge
     activationTime_(coeffs_.lookupOrDefault<scalar>("activationTime", 0)),
     K_(coarseGrainFactor),
     cPair_(timeCorrection(law.particleMaterial(), law.particleMaterial())),
-    cWall_(timeCorrection(law.particleMaterial(), law.wallMaterial()))
+    cWall_(timeCorrection(law.particleMaterial(), law.wallMaterial())),
+    wallTemperature_(readWallTemperature(coeffs_))
 {
     if (activationTime_ < 0)
     {
@@ -147,7 +177,9 @@ Foam::cohesionModels::solidBridge::solidBridge
     Info<< "    solid bridges: C " << law_.C() << ", activation at "
         << activationTime_ << " s, contact-time correction c = " << cPair_
         << " (pairs), " << cWall_ << " (walls), force scale K^(12/7) = "
-        << std::pow(K_, 12.0/7.0) << endl;
+        << std::pow(K_, 12.0/7.0) << ", wall contacts at the "
+        << wallTemperatureModelNames[wallTemperature_] << "'s temperature"
+        << endl;
 }
 
 
@@ -198,6 +230,7 @@ void Foam::cohesionModels::solidBridge::wallForces
 (
     demParticles& P,
     UList<wallContact>& contacts,
+    const demWalls& walls,
     const scalar deltaT,
     const scalar time
 ) const
@@ -207,8 +240,18 @@ void Foam::cohesionModels::solidBridge::wallForces
         return;
     }
 
+    const bool atWall = wallTemperature_ == wallTemperatureModel::wall;
+    if (atWall && walls.temperature().size() != walls.size())
+    {
+        FatalErrorInFunction
+            << "wallTemperature wall in " << coeffs_.name()
+            << ": the wall faces have no temperature (the solver sets it"
+               " from the gas temperature field T); use wallTemperature"
+               " particle" << exit(FatalError);
+    }
     const scalar* __restrict__ r = P.radius.cdata();
     const scalar* __restrict__ T = P.temperature.cdata();
+    const scalar* __restrict__ Tw = walls.temperature().cdata();
     vector* __restrict__ F = P.force.data();
     bridgeFactors factors(law_, cWall_, deltaT, K_);
 
@@ -220,8 +263,8 @@ void Foam::cohesionModels::solidBridge::wallForces
         }
         const label i = c.i;
 
-        // The wall has the particle's temperature and properties
-        factors.at(T[i]);
+        // The wall has the particle's properties (§5.3.2)
+        factors.at(atWall ? Tw[c.face] : T[i]);
         const scalar Fsb =
             factors.grow(c.history.bridge, law_.curvatureRadius(r[i]/K_));
 

@@ -162,6 +162,10 @@ void Foam::DEMCloud<CloudType>::demMotion
     const label nSub = dem.nSubSteps(dt);
     const scalar dtDEM = dt/nSub;
 
+    if (engine.cohesion().active())
+    {
+        dem.setWallTemperature();
+    }
     engine.setTime(this->db().time().value() - dt);
     engine.initialise();
     for (label k = 0; k < nSub; ++k)

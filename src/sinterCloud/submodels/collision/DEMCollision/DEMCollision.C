@@ -4,12 +4,12 @@
 #include "DEMCollision.H"
 #include "coarseGrainFactor.H"
 #include "wallPolyPatch.H"
+#include "volFields.H"
 
 template<class CloudType>
-Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
+Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
 {
-    const polyMesh& mesh = this->owner().mesh();
-    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
     const dictionary& dict = this->coeffDict();
 
     labelHashSet ids;
@@ -35,9 +35,18 @@ Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
             }
         }
     }
+    return ids.sortedToc();
+}
+
+
+template<class CloudType>
+Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
+{
+    const polyMesh& mesh = this->owner().mesh();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
     DynamicList<face> faces;
-    for (const label patchi : ids.sortedToc())
+    for (const label patchi : wallPatches_)
     {
         const polyPatch& pp = patches[patchi];
         forAll(pp, i)
@@ -139,7 +148,31 @@ Foam::DEMCollision<CloudType>::DEMCollision
         );
     }
 
+    wallPatches_ = wallPatchIds();
     engine_.setWalls(meshWalls());
+}
+
+
+template<class CloudType>
+void Foam::DEMCollision<CloudType>::setWallTemperature()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const volScalarField* T = mesh.findObject<volScalarField>("T");
+    if (!T)
+    {
+        return;
+    }
+
+    scalarField Tw(engine_.walls().size());
+    label n = 0;
+    for (const label patchi : wallPatches_)
+    {
+        for (const scalar t : T->boundaryField()[patchi])
+        {
+            Tw[n++] = t;
+        }
+    }
+    engine_.setWallTemperature(Tw);
 }
 
 
