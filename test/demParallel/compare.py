@@ -3,6 +3,7 @@
 # parallel/ (reconstructed) and roundTrip/ (serial 0.02 s write decomposed
 # and reconstructed). ASCII lagrangian fields, one parcel per line.
 import math
+import os
 import re
 import sys
 
@@ -73,8 +74,11 @@ check(du <= VELOCITY_TOL, f'largest velocity difference {du:.3g} m/s '
       f'(tolerance {VELOCITY_TOL:g} m/s)')
 
 # 3. decomposePar + reconstructPar keep every parcel field exactly
-fields = ['U', 'd', 'angularMomentum', 'demContactPartner', 'demContactSpring',
-          'demContactDuration', 'demContactFaceCentre', 'demContactBridge']
+fields = ['U', 'd', 'angularVelocity', 'contactForce', 'contactTorque',
+          'demContactPartner', 'demContactSpring', 'demContactDuration',
+          'demContactFaceCentre']
+if os.path.exists(f'{work}/serial/0.02/lagrangian/cloud/demContactBridge'):
+    fields.append('demContactBridge')
 xo, xr = positions('serial', 0.02), positions('roundTrip', 0.02)
 index = {x: k for k, x in enumerate(xr)}
 check(len(xo) == len(xr) and all(x in index for x in xo),

@@ -33,6 +33,7 @@ Description
     Data flow of a time step:
         gas -> cloud (move, collide, drag, heat) -> voidage and sources
             -> gas (momentum, energy, pressure)
+            -> cloud (the parcels' share of the implicit heat exchange)
 */
 
 #include "fvCFD.H"
@@ -44,6 +45,7 @@ Description
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "basicSinterCloud.H"
 #include "cloudCoupling.H"
+#include "incrementSolve.H"
 
 int main(int argc, char *argv[])
 {
@@ -90,6 +92,10 @@ int main(int argc, char *argv[])
             // new voidage: conservative, and exact for uniform temperature
             #include "EEqn.H"
         }
+
+        // Gas -> cloud: the parcels follow the change of the gas
+        // temperature their implicit heat exchange assumed
+        cloud.correctHeatExchange();
 
         runTime.write();
         runTime.printExecutionTime(Info);

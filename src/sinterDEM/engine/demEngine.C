@@ -6,53 +6,46 @@
 namespace
 {
 
-//- Items grouped by their particle i in [0, n): offsets start (n + 1) and
+//- Items grouped by their particle in [0, n): offsets start (n + 1) and
 //  the items in that order (counting sort, stable)
-template<class Item>
 void groupByParticle
 (
-    const Foam::UList<Item>& items,
+    const Foam::labelUList& particle,
     const Foam::label n,
     Foam::labelList& start,
-    Foam::List<const Item*>& sorted
+    Foam::labelList& sorted
 )
 {
     using namespace Foam;
     start.setSize(n + 1);
     start = 0;
-    for (const Item& c : items)
+    for (const label i : particle)
     {
-        ++start[c.i + 1];
+        ++start[i + 1];
     }
     for (label i = 0; i < n; ++i)
     {
         start[i + 1] += start[i];
     }
-    sorted.setSize(items.size());
+    sorted.setSize(particle.size());
     labelList fill(SubList<label>(start, n));
-    for (const Item& c : items)
+    forAll(particle, k)
     {
-        sorted[fill[c.i]++] = &c;
+        sorted[fill[particle[k]]++] = k;
     }
 }
 
 
-//- Keep the contacts whose particle i is local (i < nLocal), in order
-template<class Contact>
-void keepLocal(Foam::DynamicList<Contact>& contacts, const Foam::label nLocal)
+void copyBlock(const Foam::scalar* from, Foam::scalar* to, const Foam::label n)
 {
-    Foam::label k = 0;
-    for (const Contact& c : contacts)
+    for (Foam::label c = 0; c < n; ++c)
     {
-        if (c.i < nLocal)
-        {
-            contacts[k++] = c;
-        }
+        to[c] = from[c];
     }
-    contacts.resize(k);
 }
 
 } // End anonymous namespace
+
 
 Foam::demEngine::demEngine
 (
@@ -60,14 +53,20 @@ Foam::demEngine::demEngine
     const scalar coarseGrainFactor
 )
 :
-    law_(contactLaw::New(dict, coarseGrainFactor)),
-    cohesion_(cohesionModel::New(dict, law_(), coarseGrainFactor)),
+    slots_(),
+    durationSlot_(slots_.addScalar("duration", "demEngine", false)),
+    law_(contactLaw::New(dict, coarseGrainFactor, slots_)),
+    cohesion_(cohesionModel::New(dict, law_(), coarseGrainFactor, slots_)),
+    kernel_(contactKernel::New(law_(), cohesion_(), durationSlot_)),
     time_(0),
     skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
     skin_(0),
+    nLocal_(0),
     listsValid_(false),
-    nLocal_(-1),
-    nBuilds_(0)
+    lastPairs_(0),
+    lastWalls_(0),
+    nBuilds_(0),
+    recordIndexValid_(false)
 {
     if (!(skinFraction_ > 0))
     {
@@ -76,11 +75,31 @@ Foam::demEngine::demEngine
             << " must be positive, not " << skinFraction_
             << exit(FatalIOError);
     }
+    pairs_.setLayout(law_->nCoeffs(), slots_.stride(), false);
+    wallContacts_.setLayout(law_->nCoeffs(), slots_.stride(), true);
+}
+
+
+Foam::demParticles& Foam::demEngine::resetParticles()
+{
+    particles_.clear();
+    nLocal_ = -1;
+    pendingParticle_.clear();
+    pendingPartner_.clear();
+    pendingCentre_.clear();
+    pendingState_.clear();
+    pairs_.clear();
+    wallContacts_.clear();
+    builtAt_.clear();
+    listsValid_ = false;
+    recordIndexValid_ = false;
+    return particles_;
 }
 
 
 void Foam::demEngine::setWalls(const demWalls& walls)
 {
+    keepStates();
     walls_ = walls;
     listsValid_ = false;
 }
@@ -88,6 +107,7 @@ void Foam::demEngine::setWalls(const demWalls& walls)
 
 void Foam::demEngine::setHalo(autoPtr<demHalo>&& halo)
 {
+    keepStates();
     halo_ = std::move(halo);
     listsValid_ = false;
 }
@@ -96,9 +116,10 @@ void Foam::demEngine::setHalo(autoPtr<demHalo>&& halo)
 Foam::scalar Foam::demEngine::maxRadius() const
 {
     scalar rMax = 0;
-    for (const scalar r : particles_.radius)
+    const label nL = nLocal();
+    for (label i = 0; i < nL; ++i)
     {
-        rMax = max(rMax, r);
+        rMax = max(rMax, particles_.radius[i]);
     }
     if (halo_.valid())
     {
@@ -108,169 +129,267 @@ Foam::scalar Foam::demEngine::maxRadius() const
 }
 
 
-void Foam::demEngine::exchange()
-{
-    nLocal_ = particles_.size();
-    if (halo_.valid())
-    {
-        const scalar rMax = maxRadius();
-        halo_->select(particles_, nLocal_, 2*rMax*(1 + skinFraction_));
-    }
-    listsValid_ = false;
-}
-
-
-void Foam::demEngine::restoreHistory
+void Foam::demEngine::addPending
 (
-    const UList<contactPair>& pairs,
-    const UList<wallContactRecord>& walls
+    const label i,
+    const demIdentity partner,
+    const point& faceCentre,
+    const scalar* block
 )
 {
-    keptPairs_.clear();
-    for (const contactPair& c : pairs)
+    pendingParticle_.append(i);
+    pendingPartner_.append(partner);
+    pendingCentre_.append(faceCentre);
+    for (label c = 0; c < slots_.stride(); ++c)
     {
-        keptPairs_.append({c.i, particles_.identity[c.j], c.history});
+        pendingState_.append(block[c]);
     }
-    keptWalls_.clear();
-    pendingWall_ = walls;
-    pairs_.clear();
-    wallContacts_.clear();
-    listsValid_ = false;
 }
 
 
-void Foam::demEngine::keepHistory()
+void Foam::demEngine::keepStates()
 {
-    keptPairs_.clear();
-    keptWalls_.clear();
     if (!listsValid_)
     {
         return;
     }
-    for (const contactPair& c : pairs_)
+
+    const label dur = durationSlot_;
+    for (label k = 0; k < pairs_.size(); ++k)
     {
-        if (c.history.active())
+        const scalar* s = pairs_.stateOf(k);
+        if (s[dur] > 0)
         {
-            keptPairs_.append({c.i, particles_.identity[c.j], c.history});
+            addPending
+            (
+                pairs_.first[k],
+                particles_.identity[pairs_.second[k]],
+                Zero,
+                s
+            );
         }
     }
-    for (const wallContact& c : wallContacts_)
+    for (label k = 0; k < wallContacts_.size(); ++k)
     {
-        if (c.history.active())
+        const scalar* s = wallContacts_.stateOf(k);
+        if (s[dur] > 0)
         {
-            keptWalls_.append(c);
+            addPending
+            (
+                wallContacts_.first[k],
+                -1,
+                walls_.centre(wallContacts_.second[k]),
+                s
+            );
         }
+    }
+    listsValid_ = false;
+}
+
+
+void Foam::demEngine::invalidateLists()
+{
+    keepStates();
+}
+
+
+void Foam::demEngine::reorder(const labelUList& order)
+{
+    keepStates();
+
+    const label nOld = nLocal();
+    labelList newIndex(nOld, -1);
+    forAll(order, k)
+    {
+        if (order[k] >= 0)
+        {
+            newIndex[order[k]] = k;
+        }
+    }
+
+    // Pending states of the particles that stay, by their new index
+    const label stride = slots_.stride();
+    label n = 0;
+    forAll(pendingParticle_, p)
+    {
+        const label i = newIndex[pendingParticle_[p]];
+        if (i >= 0)
+        {
+            pendingParticle_[n] = i;
+            pendingPartner_[n] = pendingPartner_[p];
+            pendingCentre_[n] = pendingCentre_[p];
+            if (n != p)
+            {
+                copyBlock
+                (
+                    pendingState_.cdata() + p*stride,
+                    pendingState_.data() + n*stride,
+                    stride
+                );
+            }
+            ++n;
+        }
+    }
+    pendingParticle_.resize(n);
+    pendingPartner_.resize(n);
+    pendingCentre_.resize(n);
+    pendingState_.resize(n*stride);
+
+    particles_.resize(nOld);
+    particles_.reorder(order);
+    nLocal_ = order.size();
+
+    pairs_.clear();
+    wallContacts_.clear();
+    builtAt_.clear();
+    listsValid_ = false;
+    recordIndexValid_ = false;
+}
+
+
+void Foam::demEngine::addRecords(const label i, const contactRecords& records)
+{
+    keepStates();
+    if (records.size() && records.stride != slots_.stride())
+    {
+        FatalErrorInFunction
+            << "Contact records of particle " << i << " hold "
+            << records.stride << " scalars per contact; the models declare "
+            << slots_.stride() << exit(FatalError);
+    }
+    forAll(records.partner, k)
+    {
+        addPending
+        (
+            i,
+            records.partner[k],
+            records.faceCentre[k],
+            records.stateOf(k)
+        );
     }
 }
 
 
-void Foam::demEngine::buildLists()
+void Foam::demEngine::rebuild()
 {
-    const demParticles& P = particles_;
-    const label n = P.size();
+    demParticles& P = particles_;
     const label nL = nLocal();
+    const label stride = slots_.stride();
 
     const scalar rMax = maxRadius();
     skin_ = skinFraction_*2*rMax;
 
-    // Kept pair histories, indexed by their (local) first particle
+    if (halo_.valid())
+    {
+        halo_->select(P, nL, 2*rMax + skin_);
+    }
+
+    // Pending states by particle
     labelList start;
-    List<const keptPair*> kept;
-    groupByParticle(keptPairs_, nL, start, kept);
+    labelList sorted;
+    groupByParticle(pendingParticle_, nL, start, sorted);
 
-    // New lists; pairs of two ghosts are their owners' business
+    // Pairs (of two ghosts: their owners' business)
     pairs_.clear();
+    pairs_.reserve(label(1.05*lastPairs_) + 64);
     bins_.build(P.position, 2*rMax + skin_);
-    bins_.pairs(P, skin_, pairs_);
-    if (nL < n)
-    {
-        keepLocal(pairs_, nL);
-    }
+    bins_.pairs(P, nL, skin_, pairs_);
+    law_->setPairCoefficients(P, pairs_);
 
-    for (contactPair& c : pairs_)
+    // A pair's state is kept from the side of its first particle; a state
+    // kept from the other side (the particles changed order) is flipped
+    auto findPair = [&](const label a, const label b) -> label
     {
-        const label partner = P.identity[c.j];
-        for (label k = start[c.i]; k < start[c.i + 1]; ++k)
+        const demIdentity partner = P.identity[b];
+        for (label q = start[a]; q < start[a + 1]; ++q)
         {
-            if (kept[k]->partner == partner)
+            if (pendingPartner_[sorted[q]] == partner)
             {
-                c.history = kept[k]->history;
-                break;
+                return sorted[q];
             }
+        }
+        return -1;
+    };
+
+    for (label k = 0; k < pairs_.size(); ++k)
+    {
+        const label a = pairs_.first[k];
+        const label b = pairs_.second[k];
+        label p = findPair(a, b);
+        if (p >= 0)
+        {
+            copyBlock(pendingState_.cdata() + p*stride, pairs_.stateOf(k), stride);
+        }
+        else if (b < nL && (p = findPair(b, a)) >= 0)
+        {
+            scalar* s = pairs_.stateOf(k);
+            copyBlock(pendingState_.cdata() + p*stride, s, stride);
+            slots_.flipSides(s);
         }
     }
 
-    // Wall contacts of local particles, history by (particle, face)
-    labelList wallStart;
-    List<const wallContact*> keptWall;
-    groupByParticle(keptWalls_, nL, wallStart, keptWall);
-
+    // Wall contacts of local particles, states by face centre
     wallContacts_.clear();
-    walls_.candidates(P, skin_, wallContacts_);
-    if (nL < n)
-    {
-        keepLocal(wallContacts_, nL);
-    }
+    wallContacts_.reserve(label(1.05*lastWalls_) + 64);
+    walls_.candidates(P, nL, skin_, wallContacts_);
+    law_->setWallCoefficients(P, wallContacts_);
 
-    for (wallContact& c : wallContacts_)
+    const scalar tol2 = sqr(1e-6*skin_);
+    for (label k = 0; k < wallContacts_.size(); ++k)
     {
-        for (label k = wallStart[c.i]; k < wallStart[c.i + 1]; ++k)
+        const label i = wallContacts_.first[k];
+        if (start[i] == start[i + 1])
         {
-            if (keptWall[k]->face == c.face)
+            continue;
+        }
+        const point centre = walls_.centre(wallContacts_.second[k]);
+        for (label q = start[i]; q < start[i + 1]; ++q)
+        {
+            const label p = sorted[q];
+            if
+            (
+                contactRecords::isWall(pendingPartner_[p])
+             && magSqr(pendingCentre_[p] - centre) < tol2
+            )
             {
-                c.history = keptWall[k]->history;
+                copyBlock
+                (
+                    pendingState_.cdata() + p*stride,
+                    wallContacts_.stateOf(k),
+                    stride
+                );
                 break;
             }
         }
     }
 
-    // Wall histories given by face centre
-    if (pendingWall_.size())
-    {
-        labelList pendStart;
-        List<const wallContactRecord*> pend;
-        groupByParticle(pendingWall_, nL, pendStart, pend);
+    pendingParticle_.clear();
+    pendingPartner_.clear();
+    pendingCentre_.clear();
+    pendingState_.clear();
 
-        const scalar tol2 = sqr(1e-6*skin_);
-        for (wallContact& c : wallContacts_)
-        {
-            if (pendStart[c.i] == pendStart[c.i + 1])
-            {
-                continue;
-            }
-            const point centre = walls_.centre(c.face);
-            for (label k = pendStart[c.i]; k < pendStart[c.i + 1]; ++k)
-            {
-                if (magSqr(pend[k]->faceCentre - centre) < tol2)
-                {
-                    c.history = pend[k]->history;
-                    break;
-                }
-            }
-        }
-
-        pendingWall_.clear();
-    }
-
-    keptPairs_.clear();
-    keptWalls_.clear();
-
-    builtAt_ = P.position;
+    lastPairs_ = pairs_.size();
+    lastWalls_ = wallContacts_.size();
+    builtAt_ = SubList<vector>(P.position, nL);
     listsValid_ = true;
+    recordIndexValid_ = false;
     ++nBuilds_;
 }
 
 
 bool Foam::demEngine::listsExpired() const
 {
-    if (!listsValid_ || builtAt_.size() != particles_.size())
+    const label nL = nLocal();
+    if (!listsValid_ || builtAt_.size() != nL)
     {
         return true;
     }
     const scalar limit2 = sqr(0.5*skin_);
-    forAll(builtAt_, i)
+    const vector* __restrict__ x = particles_.position.cdata();
+    const vector* __restrict__ x0 = builtAt_.cdata();
+    for (label i = 0; i < nL; ++i)
     {
-        if (magSqr(particles_.position[i] - builtAt_[i]) > limit2)
+        if (magSqr(x[i] - x0[i]) > limit2)
         {
             return true;
         }
@@ -279,22 +398,97 @@ bool Foam::demEngine::listsExpired() const
 }
 
 
+void Foam::demEngine::checkWallTemperature() const
+{
+    if
+    (
+        cohesion_->needsWallTemperature()
+     && walls_.size()
+     && walls_.temperature().size() != walls_.size()
+    )
+    {
+        FatalErrorInFunction
+            << "cohesionModel " << cohesion_->type() << " takes wall contacts"
+               " at the wall faces' temperature (wallTemperature wall), but"
+               " the wall faces have none (the solver sets it from the gas"
+               " temperature field T); use wallTemperature particle"
+            << exit(FatalError);
+    }
+}
+
+
 void Foam::demEngine::computeForces(const scalar deltaT)
 {
     demParticles& P = particles_;
-    forAll(P.force, i)
+    vector* __restrict__ F = P.force.data();
+    vector* __restrict__ M = P.torque.data();
+    const label n = P.size();
+    for (label i = 0; i < n; ++i)
     {
-        P.dragForce[i] = P.dragCoeff[i]*(P.fluidVelocity[i] - P.velocity[i]);
-        P.force[i] = P.externalForce[i] + P.dragForce[i];
-        P.torque[i] = Zero;
+        F[i] = Zero;
+        M[i] = Zero;
     }
 
-    law_->pairForces(P, pairs_, deltaT);
-    cohesion_->pairForces(P, pairs_, deltaT, time_);
+    kernel_->pairs(P, pairs_, deltaT, time_);
+    kernel_->walls(P, wallContacts_, walls_, deltaT, time_);
+}
 
-    walls_.update(P, wallContacts_);
-    law_->wallForces(P, wallContacts_, deltaT);
-    cohesion_->wallForces(P, wallContacts_, walls_, deltaT, time_);
+
+void Foam::demEngine::kick(const scalar h)
+{
+    demParticles& P = particles_;
+    const label nL = nLocal();
+
+    vector* __restrict__ v = P.velocity.data();
+    vector* __restrict__ w = P.angularVelocity.data();
+    vector* __restrict__ Jd = P.dragImpulse.data();
+    const vector* __restrict__ F = P.force.cdata();
+    const vector* __restrict__ M = P.torque.cdata();
+    const vector* __restrict__ Fext = P.externalForce.cdata();
+    const vector* __restrict__ Uf = P.fluidVelocity.cdata();
+    const scalar* __restrict__ beta = P.dragCoeff.cdata();
+    const scalar* __restrict__ invM = P.invMass.cdata();
+    const scalar* __restrict__ invI = P.invInertia.cdata();
+
+    for (label i = 0; i < nL; ++i)
+    {
+        const scalar hm = h*invM[i];
+        v[i] = (v[i] + hm*(F[i] + Fext[i] + beta[i]*Uf[i]))/(1 + hm*beta[i]);
+        w[i] += (h*invI[i])*M[i];
+        Jd[i] += (h*beta[i])*(Uf[i] - v[i]);
+    }
+}
+
+
+void Foam::demEngine::beginStep()
+{
+    if (nLocal_ < 0)
+    {
+        nLocal_ = particles_.size();
+    }
+    checkWallTemperature();
+    recordIndexValid_ = false;
+
+    bool rebuildNow = listsExpired();
+    if (halo_.valid())
+    {
+        reduce(rebuildNow, orOp<bool>());
+    }
+    if (rebuildNow)
+    {
+        keepStates();
+        rebuild();
+    }
+    else if (halo_.valid())
+    {
+        halo_->update(particles_, nLocal_, true);
+    }
+
+    vector* __restrict__ Jd = particles_.dragImpulse.data();
+    for (label i = 0; i < nLocal_; ++i)
+    {
+        Jd[i] = Zero;
+    }
 }
 
 
@@ -302,41 +496,34 @@ void Foam::demEngine::initialise()
 {
     if (nLocal_ < 0)
     {
-        exchange();
+        nLocal_ = particles_.size();
     }
-    buildLists();
+    checkWallTemperature();
+    keepStates();
+    rebuild();
     computeForces(0);
 }
 
 
 void Foam::demEngine::step(const scalar deltaT)
 {
-    if (!listsValid_)
+    if (nLocal_ < 0 || !listsValid_)
     {
         initialise();
     }
 
     demParticles& P = particles_;
     const label nL = nLocal();
-    const scalar half = 0.5*deltaT;
+    const scalar h = 0.5*deltaT;
 
-    vector* __restrict__ x = P.position.data();
-    vector* __restrict__ v = P.velocity.data();
-    vector* __restrict__ w = P.angularVelocity.data();
-    const vector* __restrict__ F = P.force.cdata();
-    const vector* __restrict__ T = P.torque.cdata();
-    const scalar* __restrict__ m = P.mass.cdata();
-    const scalar* __restrict__ I = P.inertia.cdata();
-
-    vector* __restrict__ Jd = P.dragImpulse.data();
-    const vector* __restrict__ Fd = P.dragForce.cdata();
-
-    for (label i = 0; i < nL; ++i)
+    kick(h);
     {
-        v[i] += (half/m[i])*F[i];
-        w[i] += (half/I[i])*T[i];
-        x[i] += deltaT*v[i];
-        Jd[i] += half*Fd[i];
+        vector* __restrict__ x = P.position.data();
+        const vector* __restrict__ v = P.velocity.cdata();
+        for (label i = 0; i < nL; ++i)
+        {
+            x[i] += deltaT*v[i];
+        }
     }
 
     if (halo_.valid())
@@ -346,34 +533,130 @@ void Foam::demEngine::step(const scalar deltaT)
         halo_->update(P, nL);
         if (returnReduce(listsExpired(), orOp<bool>()))
         {
-            keepHistory();
-            halo_->select(P, nL, 2*maxRadius()*(1 + skinFraction_));
-            buildLists();
+            keepStates();
+            rebuild();
         }
     }
     else if (listsExpired())
     {
-        keepHistory();
-        buildLists();
+        keepStates();
+        rebuild();
     }
 
     time_ += deltaT;
     computeForces(deltaT);
+    kick(h);
+    recordIndexValid_ = false;
+}
 
-    // Fresh pointers: choosing the ghosts may have reallocated the lists
-    vector* __restrict__ v2 = P.velocity.data();
-    vector* __restrict__ w2 = P.angularVelocity.data();
-    const vector* __restrict__ F2 = P.force.cdata();
-    const vector* __restrict__ T2 = P.torque.cdata();
-    const scalar* __restrict__ m2 = P.mass.cdata();
-    const scalar* __restrict__ I2 = P.inertia.cdata();
-    vector* __restrict__ Jd2 = P.dragImpulse.data();
-    const vector* __restrict__ Fd2 = P.dragForce.cdata();
-    for (label i = 0; i < nL; ++i)
+
+void Foam::demEngine::indexRecords() const
+{
+    const label nL = nLocal();
+    const label dur = durationSlot_;
+
+    // Entries: 2k (pair k from its first), 2k + 1 (from its second), -k-1
+    // (wall contact k)
+    DynamicList<label> owner;
+    DynamicList<label> entry;
+    for (label k = 0; k < pairs_.size(); ++k)
     {
-        v2[i] += (half/m2[i])*F2[i];
-        w2[i] += (half/I2[i])*T2[i];
-        Jd2[i] += half*Fd2[i];
+        if (pairs_.stateOf(k)[dur] > 0)
+        {
+            owner.append(pairs_.first[k]);
+            entry.append(2*k);
+            if (pairs_.second[k] < nL)
+            {
+                owner.append(pairs_.second[k]);
+                entry.append(2*k + 1);
+            }
+        }
+    }
+    for (label k = 0; k < wallContacts_.size(); ++k)
+    {
+        if (wallContacts_.stateOf(k)[dur] > 0)
+        {
+            owner.append(wallContacts_.first[k]);
+            entry.append(-k - 1);
+        }
+    }
+
+    labelList sorted;
+    groupByParticle(owner, nL, recordStart_, sorted);
+    recordContact_.setSize(sorted.size());
+    forAll(sorted, q)
+    {
+        recordContact_[q] = entry[sorted[q]];
+    }
+    recordIndexValid_ = true;
+}
+
+
+void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
+{
+    if (!listsValid_)
+    {
+        // Between a reorder and the next build: the pending states are the
+        // contacts
+        DynamicList<label> mine;
+        forAll(pendingParticle_, p)
+        {
+            if (pendingParticle_[p] == i)
+            {
+                mine.append(p);
+            }
+        }
+        const label stride = slots_.stride();
+        records.setSize(mine.size(), stride, slots_.vectorOffsets());
+        forAll(mine, k)
+        {
+            const label p = mine[k];
+            records.partner[k] = pendingPartner_[p];
+            records.faceCentre[k] = pendingCentre_[p];
+            copyBlock
+            (
+                pendingState_.cdata() + p*stride,
+                records.stateOf(k),
+                stride
+            );
+        }
+        return;
+    }
+
+    if (!recordIndexValid_)
+    {
+        indexRecords();
+    }
+
+    const label stride = slots_.stride();
+    const label s = recordStart_[i];
+    const label e = recordStart_[i + 1];
+    records.setSize(e - s, stride, slots_.vectorOffsets());
+    for (label q = s; q < e; ++q)
+    {
+        const label c = recordContact_[q];
+        const label k = q - s;
+        if (c >= 0)
+        {
+            const label pk = c/2;
+            const bool fromSecond = c % 2;
+            const label partner =
+                fromSecond ? pairs_.first[pk] : pairs_.second[pk];
+            records.partner[k] = particles_.identity[partner];
+            records.faceCentre[k] = Zero;
+            copyBlock(pairs_.stateOf(pk), records.stateOf(k), stride);
+            if (fromSecond)
+            {
+                slots_.flipSides(records.stateOf(k));
+            }
+        }
+        else
+        {
+            const label wk = -c - 1;
+            records.partner[k] = -1;
+            records.faceCentre[k] = walls_.centre(wallContacts_.second[wk]);
+            copyBlock(wallContacts_.stateOf(wk), records.stateOf(k), stride);
+        }
     }
 }
 
@@ -382,41 +665,17 @@ Foam::label Foam::demEngine::nPairContacts() const
 {
     const demParticles& P = particles_;
     const label nL = nLocal();
+    const label dur = durationSlot_;
     label count = 0;
-    for (const contactPair& c : pairs_)
+    for (label k = 0; k < pairs_.size(); ++k)
     {
+        const label i = pairs_.first[k];
+        const label j = pairs_.second[k];
         if
         (
-            c.history.active()
-         && (c.j < nL || P.identity[c.i] < P.identity[c.j])
+            pairs_.stateOf(k)[dur] > 0
+         && (j < nL || P.identity[i] < P.identity[j])
         )
-        {
-            ++count;
-        }
-    }
-    return count;
-}
-
-
-Foam::label Foam::demEngine::nBridgedContacts() const
-{
-    const demParticles& P = particles_;
-    const label nL = nLocal();
-    label count = 0;
-    for (const contactPair& c : pairs_)
-    {
-        if
-        (
-            c.history.active() && c.history.bridge > 0
-         && (c.j < nL || P.identity[c.i] < P.identity[c.j])
-        )
-        {
-            ++count;
-        }
-    }
-    for (const wallContact& c : wallContacts_)
-    {
-        if (c.history.active() && c.history.bridge > 0)
         {
             ++count;
         }
@@ -428,9 +687,46 @@ Foam::label Foam::demEngine::nBridgedContacts() const
 Foam::label Foam::demEngine::nWallContacts() const
 {
     label count = 0;
-    for (const wallContact& c : wallContacts_)
+    for (label k = 0; k < wallContacts_.size(); ++k)
     {
-        if (c.history.active())
+        if (wallContacts_.stateOf(k)[durationSlot_] > 0)
+        {
+            ++count;
+        }
+    }
+    return count;
+}
+
+
+Foam::label Foam::demEngine::nBridgedContacts() const
+{
+    const label b = cohesion_->bridgeSlot();
+    if (b < 0)
+    {
+        return 0;
+    }
+    const demParticles& P = particles_;
+    const label nL = nLocal();
+    const label dur = durationSlot_;
+    label count = 0;
+    for (label k = 0; k < pairs_.size(); ++k)
+    {
+        const scalar* s = pairs_.stateOf(k);
+        const label i = pairs_.first[k];
+        const label j = pairs_.second[k];
+        if
+        (
+            s[dur] > 0 && s[b] > 0
+         && (j < nL || P.identity[i] < P.identity[j])
+        )
+        {
+            ++count;
+        }
+    }
+    for (label k = 0; k < wallContacts_.size(); ++k)
+    {
+        const scalar* s = wallContacts_.stateOf(k);
+        if (s[dur] > 0 && s[b] > 0)
         {
             ++count;
         }

@@ -64,8 +64,9 @@ void Foam::binGrid::build(const UList<vector>& positions, const scalar width)
 void Foam::binGrid::pairs
 (
     const demParticles& P,
+    const label nLocal,
     const scalar skin,
-    DynamicList<contactPair>& result
+    contactList& result
 ) const
 {
     // Forward half of the 26 neighbours
@@ -84,12 +85,13 @@ void Foam::binGrid::pairs
     auto test = [&](const label a, const label b)
     {
         const scalar range = r[a] + r[b] + skin;
-        if (magSqr(x[a] - x[b]) < range*range)
+        if
+        (
+            (a < nLocal || b < nLocal)
+         && magSqr(x[a] - x[b]) < range*range
+        )
         {
-            contactPair c;
-            c.i = min(a, b);
-            c.j = max(a, b);
-            result.append(c);
+            result.append(min(a, b), max(a, b));
         }
     };
 

@@ -79,9 +79,12 @@ void Foam::demHalo::select
         os << send.size();
         for (const label i : send)
         {
+            // The identity as two labels (OpenFOAM's streams write
+            // 64-bit integers as labels)
             os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
-                << P.radius[i] << P.mass[i] << P.inertia[i]
-                << P.temperature[i] << P.identity[i] << P.origin[i];
+                << P.radius[i] << P.invMass[i] << P.invInertia[i]
+                << P.temperature[i]
+                << identityProc(P.identity[i]) << identityIndex(P.identity[i]);
         }
     }
     buffers.finishedSends();
@@ -93,26 +96,26 @@ void Foam::demHalo::select
         label n;
         is >> n;
         nReceived_[k] = n;
-        for (label g = 0; g < n; ++g)
+        const label start = P.size();
+        P.resize(start + n);
+        for (label i = start; i < start + n; ++i)
         {
-            vector x, v, w;
-            scalar r, m, I, T;
-            label id;
-            labelPair origin;
-            is >> x >> v >> w >> r >> m >> I >> T >> id >> origin;
-
-            // A particle with zero forces, then the data it carries
-            const label i = P.append(x, v, w, r, 1, id);
-            P.mass[i] = m;
-            P.inertia[i] = I;
-            P.temperature[i] = T;
-            P.origin[i] = origin;
+            label proc, id;
+            is  >> P.position[i] >> P.velocity[i] >> P.angularVelocity[i]
+                >> P.radius[i] >> P.invMass[i] >> P.invInertia[i]
+                >> P.temperature[i] >> proc >> id;
+            P.identity[i] = makeIdentity(proc, id);
         }
     }
 }
 
 
-void Foam::demHalo::update(demParticles& P, const label nLocal) const
+void Foam::demHalo::update
+(
+    demParticles& P,
+    const label nLocal,
+    const bool withTemperature
+) const
 {
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(neighbours_, k)
@@ -121,6 +124,10 @@ void Foam::demHalo::update(demParticles& P, const label nLocal) const
         for (const label i : sendMap_[k])
         {
             os << P.position[i] << P.velocity[i] << P.angularVelocity[i];
+            if (withTemperature)
+            {
+                os << P.temperature[i];
+            }
         }
     }
     buffers.finishedSends();
@@ -132,6 +139,10 @@ void Foam::demHalo::update(demParticles& P, const label nLocal) const
         for (label n = 0; n < nReceived_[k]; ++n, ++g)
         {
             is >> P.position[g] >> P.velocity[g] >> P.angularVelocity[g];
+            if (withTemperature)
+            {
+                is >> P.temperature[g];
+            }
         }
     }
 }

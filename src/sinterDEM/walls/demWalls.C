@@ -147,8 +147,9 @@ void Foam::demWalls::buildBins(const scalar range) const
 void Foam::demWalls::candidates
 (
     const demParticles& P,
+    const label n,
     const scalar skin,
-    DynamicList<wallContact>& result
+    contactList& result
 ) const
 {
     if (faces_.empty())
@@ -157,9 +158,9 @@ void Foam::demWalls::candidates
     }
 
     scalar rMax = 0;
-    for (const scalar r : P.radius)
+    for (label i = 0; i < n; ++i)
     {
-        rMax = max(rMax, r);
+        rMax = max(rMax, P.radius[i]);
     }
     if (rMax + skin > binnedRange_)
     {
@@ -168,7 +169,7 @@ void Foam::demWalls::candidates
 
     // The faces listed in the particle's bin, then the exact tests
     const point& o = binBox_.min();
-    for (label i = 0; i < P.size(); ++i)
+    for (label i = 0; i < n; ++i)
     {
         const point& x = P.position[i];
         if (!binBox_.contains(x))
@@ -201,10 +202,7 @@ void Foam::demWalls::candidates
             const point c = closestPoint(f, x, interior);
             if (magSqr(x - c) < range*range)
             {
-                wallContact w;
-                w.i = i;
-                w.face = f;
-                result.append(w);
+                result.append(i, f);
             }
         }
     }
@@ -214,19 +212,21 @@ void Foam::demWalls::candidates
 void Foam::demWalls::update
 (
     const demParticles& P,
-    UList<wallContact>& contacts
+    contactList& contacts
 ) const
 {
+    const label nc = contacts.size();
+
     // Interior flags and closest points of one particle's contacts
     DynamicList<bool> interior;
     DynamicList<point> closest;
 
     label s = 0;
-    while (s < contacts.size())
+    while (s < nc)
     {
-        const label i = contacts[s].i;
+        const label i = contacts.first[s];
         label e = s;
-        while (e < contacts.size() && contacts[e].i == i)
+        while (e < nc && contacts.first[e] == i)
         {
             ++e;
         }
@@ -240,7 +240,7 @@ void Foam::demWalls::update
         for (label k = s; k < e; ++k)
         {
             bool in;
-            closest.append(closestPoint(contacts[k].face, x, in));
+            closest.append(closestPoint(contacts.second[k], x, in));
             const bool touching = magSqr(x - closest.last()) < r*r;
             interior.append(in);
             anyInterior = anyInterior || (in && touching);
@@ -248,7 +248,6 @@ void Foam::demWalls::update
 
         for (label k = s; k < e; ++k)
         {
-            wallContact& c = contacts[k];
             const point& cp = closest[k - s];
             const vector d = x - cp;
             const scalar dist = mag(d);
@@ -263,7 +262,7 @@ void Foam::demWalls::update
                 {
                     if
                     (
-                        contacts[q].overlap > 0
+                        contacts.overlap[q] > 0
                      && magSqr(closest[q - s] - cp) < sqr(1e-9*r)
                     )
                     {
@@ -274,13 +273,13 @@ void Foam::demWalls::update
 
             if (counts)
             {
-                c.normal =
-                    (dist > VSMALL) ? d/dist : -normals_[c.face];
-                c.overlap = r - dist;
+                contacts.normal[k] =
+                    (dist > VSMALL) ? d/dist : -normals_[contacts.second[k]];
+                contacts.overlap[k] = r - dist;
             }
             else
             {
-                c.overlap = 0;
+                contacts.overlap[k] = 0;
             }
         }
 

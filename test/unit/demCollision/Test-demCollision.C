@@ -142,8 +142,7 @@ public:
 //- Head-on collision of two equal spheres at approach velocity v
 collisionResult headOn(demEngine& dem, const scalar v, const scalar dt)
 {
-    demParticles& P = dem.particles();
-    P.clear();
+    demParticles& P = dem.resetParticles();
     const scalar gap = 0.01*r;
     P.append(point(-r - gap, 0, 0), vector(0.5*v, 0, 0), Zero, r, rho, 0);
     P.append(point(r + gap, 0, 0), vector(-0.5*v, 0, 0), Zero, r, rho, 1);
@@ -159,7 +158,7 @@ collisionResult headOn(demEngine& dem, const scalar v, const scalar dt)
         clock.advance(dt, mag(Q.position[1] - Q.position[0]) - 2*r);
         if (dem.nPairContacts())
         {
-            history = dem.pairs()[0].history.duration;
+            history = dem.pairs().stateOf(0)[dem.durationSlot()];
             ++steps;
         }
     }
@@ -179,8 +178,7 @@ collisionResult headOn(demEngine& dem, const scalar v, const scalar dt)
 collisionResult onWall(demEngine& dem, const vector& U, const scalar dt)
 {
     dem.setWalls(floor(100*r));
-    demParticles& P = dem.particles();
-    P.clear();
+    demParticles& P = dem.resetParticles();
     P.append(point(0, 0, 1.01*r), U, Zero, r, rho, 0);
     dem.initialise();
 
@@ -194,7 +192,7 @@ collisionResult onWall(demEngine& dem, const vector& U, const scalar dt)
         clock.advance(dt, Q.position[0].z() - r);
         if (dem.nWallContacts())
         {
-            history = dem.wallContacts()[0].history.duration;
+            history = dem.wallContacts().stateOf(0)[dem.durationSlot()];
             ++steps;
         }
     }
@@ -318,13 +316,20 @@ void caseOblique()
 }
 
 
-void caseSettledBed()
+//- A box of frictionless walls (the floor is face 0, normals out of the
+//  box) holding nLayers staggered layers of nSide x nSide spheres of radii
+//  0.9-1.0 r, at rest under gravity; the time step and the bed's weight
+scalar fillBox
+(
+    demEngine& dem,
+    const label nSide,
+    const label nLayers,
+    scalar& weight
+)
 {
     const scalar g = 9.81;
-    const label nSide = 8;
     const scalar half = nSide*r*1.05;
 
-    // Floor (face 0) and four side walls, normals out of the box
     const scalar H = 40*r;
     pointField pts
     ({
@@ -341,16 +346,12 @@ void caseSettledBed()
         face(labelList({2, 3, 7, 6})),
         face(labelList({3, 0, 4, 7}))
     });
-
-    // Frictionless walls, so that the side walls cannot carry weight
-    demEngine dem(settings("HertzMindlin", 0.5, 0.5, 0, 0), 1);
     dem.setWalls(demWalls(pts, faces));
 
-    demParticles& P = dem.particles();
-    P.clear();
+    demParticles& P = dem.resetParticles();
     label id = 0;
-    scalar weight = 0;
-    for (label k = 0; k < 6; ++k)
+    weight = 0;
+    for (label k = 0; k < nLayers; ++k)
     {
         for (label j = 0; j < nSide; ++j)
         {
@@ -365,14 +366,24 @@ void caseSettledBed()
                     r*1.1*(2*k + 1)
                 );
                 const label p = P.append(x, Zero, Zero, ri, rho, id++);
-                P.externalForce[p] = vector(0, 0, -g*P.mass[p]);
-                weight += g*P.mass[p];
+                P.externalForce[p] = vector(0, 0, -g*P.mass(p));
+                weight += g*P.mass(p);
             }
         }
     }
 
     const HertzCollision hertz(r, mass(), Yp, nup);
-    const scalar dt = hertz.contactTime(0.1)/50;
+    return hertz.contactTime(0.1)/50;
+}
+
+
+void caseSettledBed()
+{
+    // Frictionless walls, so that the side walls cannot carry weight
+    demEngine dem(settings("HertzMindlin", 0.5, 0.5, 0, 0), 1);
+    scalar weight;
+    const scalar dt = fillBox(dem, 8, 6, weight);
+    const demParticles& P = dem.particles();
     dem.initialise();
 
     // Settle for 0.5 s
@@ -382,24 +393,161 @@ void caseSettledBed()
         dem.step(dt);
     }
 
+    // The contact forces of the pairs cancel, and the frictionless side
+    // walls push horizontally: the vertical sum of all contact forces on
+    // the particles is what the floor carries
     scalar floorForce = 0;
     scalar kinetic = 0;
-    for (const wallContact& c : dem.wallContacts())
+    forAll(P.velocity, i)
     {
-        if (c.face == 0)
-        {
-            floorForce += c.force.z();
-        }
-    }
-    forAll(P.mass, i)
-    {
-        kinetic += 0.5*P.mass[i]*magSqr(P.velocity[i]);
+        floorForce += P.force[i].z();
+        kinetic += 0.5*P.mass(i)*magSqr(P.velocity[i]);
     }
     Info<< "     " << P.size() << " particles, " << dem.nPairContacts()
         << " pair contacts, " << dem.nWallContacts() << " wall contacts, "
         << "kinetic energy " << kinetic << " J after " << nSteps
         << " steps (" << dem.nBuilds() << " list builds)" << nl;
     check("settled bed floor force vs weight", floorForce, weight, 0.005);
+}
+
+
+//- Copy the particles of one engine into another (a restart): the state
+//  the cloud keeps on its parcels, in the given order, and the contacts
+//  as records
+void copyParticles
+(
+    const demEngine& from,
+    demEngine& to,
+    const labelList& order
+)
+{
+    const demParticles& A = from.particles();
+    demParticles& B = to.resetParticles();
+    B.resize(order.size());
+    forAll(order, k)
+    {
+        const label i = order[k];
+        B.position[k] = A.position[i];
+        B.velocity[k] = A.velocity[i];
+        B.angularVelocity[k] = A.angularVelocity[i];
+        B.force[k] = A.force[i];
+        B.torque[k] = A.torque[i];
+        B.radius[k] = A.radius[i];
+        B.invMass[k] = A.invMass[i];
+        B.invInertia[k] = A.invInertia[i];
+        B.externalForce[k] = A.externalForce[i];
+        B.identity[k] = A.identity[i];
+    }
+    contactRecords records;
+    forAll(order, k)
+    {
+        from.recordsOf(order[k], records);
+        to.addRecords(k, records);
+    }
+}
+
+
+//- Largest distance between the positions of the same particles (by
+//  identity) of two engines [m]
+scalar largestDifference(const demEngine& a, const demEngine& b)
+{
+    const demParticles& A = a.particles();
+    const demParticles& B = b.particles();
+    scalar d = 0;
+    forAll(A.position, i)
+    {
+        forAll(B.position, k)
+        {
+            if (B.identity[k] == A.identity[i])
+            {
+                d = max(d, mag(A.position[i] - B.position[k]));
+            }
+        }
+    }
+    return d;
+}
+
+
+//- The engine's state across CFD steps: the lists persist while nothing
+//  moves far; a copy of the particles with their contact records (a
+//  restart) continues bit-identically once the original rebuilds its
+//  lists too (as the cloud does at each write); a reordered copy continues
+//  to round-off (1e-10 r after 2000 steps); every touching contact is
+//  carried
+void casePersistentState()
+{
+    const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
+    demEngine a(dict, 1);
+    scalar weight;
+    const scalar dt = fillBox(a, 6, 3, weight);
+    a.initialise();
+    for (label step = 0; step < 20000; ++step)
+    {
+        a.step(dt);
+    }
+
+    // Settled: CFD steps of 10 sub-steps, lists rebuilt only on demand
+    const label builds0 = a.nBuilds();
+    for (label cfd = 0; cfd < 20; ++cfd)
+    {
+        a.beginStep();
+        for (label k = 0; k < 10; ++k)
+        {
+            a.step(dt);
+        }
+    }
+    Info<< "     settled bed of " << a.particles().size() << ": "
+        << a.nPairContacts() << " pair and " << a.nWallContacts()
+        << " wall contacts; " << a.nBuilds() - builds0
+        << " list builds in 20 CFD steps" << nl;
+    check("list builds in 20 settled CFD steps", a.nBuilds() - builds0, 0, 0);
+
+    // A restart: same order, contacts as records
+    const label n = a.particles().size();
+    labelList same(identity(n));
+    labelList reversed(n);
+    forAll(reversed, k)
+    {
+        reversed[k] = n - 1 - k;
+    }
+    demEngine b(dict, 1);
+    demEngine c(dict, 1);
+    b.setWalls(a.walls());
+    c.setWalls(a.walls());
+    copyParticles(a, b, same);
+    copyParticles(a, c, reversed);
+
+    a.invalidateLists();
+    a.beginStep();
+    b.beginStep();
+    c.beginStep();
+    check("pair contacts carried", b.nPairContacts(), a.nPairContacts(), 0);
+    check("wall contacts carried", b.nWallContacts(), a.nWallContacts(), 0);
+    check
+    (
+        "pair contacts carried in reverse order",
+        c.nPairContacts(), a.nPairContacts(), 0
+    );
+
+    // Shaken: 2000 steps with a sideways push on every particle
+    for (demEngine* e : {&a, &b, &c})
+    {
+        demParticles& P = e->particles();
+        forAll(P.externalForce, i)
+        {
+            P.externalForce[i].x() += 0.5*weight/n;
+        }
+        for (label step = 0; step < 2000; ++step)
+        {
+            e->step(dt);
+        }
+    }
+    check("restart copy: largest position difference [m]", largestDifference(a, b), 0, 0);
+    const scalar dc = largestDifference(a, c);
+    Info<< "     reordered copy: largest position difference " << dc
+        << " m after 2000 steps" << nl;
+    // Round-off: the forces on a particle are summed in another order
+    check("reordered copy within 1e-10 r", dc < 1e-10*r, 1, 0);
 }
 
 
@@ -442,7 +590,8 @@ int main(int argc, char *argv[])
     argList::noCheckProcessorDirectories();
     argList::addOption
     (
-        "case", "name", "headOn|wall|oblique|settledBed|badInput"
+        "case", "name",
+        "headOn|wall|oblique|settledBed|persistentState|badInput"
     );
     argList::addOption
     (
@@ -458,12 +607,14 @@ int main(int argc, char *argv[])
     else if (which == "wall") caseWall();
     else if (which == "oblique") caseOblique();
     else if (which == "settledBed") caseSettledBed();
+    else if (which == "persistentState") casePersistentState();
     else if (which == "badInput") caseBadInput(args.get<word>("bad"));
     else
     {
         FatalErrorInFunction
             << "Unknown -case " << which
-            << ". Valid: headOn wall oblique settledBed" << exit(FatalError);
+            << ". Valid: headOn wall oblique settledBed persistentState"
+            << exit(FatalError);
     }
 
     if (unitTest::nFailed())

@@ -89,14 +89,13 @@ dictionary engineDict
 void hold(demEngine& engine, const scalar K, const scalar T)
 {
     const scalar r = K*rPrimary;
-    demParticles& P = engine.particles();
-    P.clear();
+    demParticles& P = engine.resetParticles();
     P.append(vector::zero, Zero, Zero, r, 5240, 0);
     P.append(vector(2*r - 1e-3*r, 0, 0), Zero, Zero, r, 5240, 1);
-    forAll(P.mass, i)
+    forAll(P.position, i)
     {
-        P.mass[i] = 1e30;
-        P.inertia[i] = 1e30;
+        P.invMass[i] = 1e-30;
+        P.invInertia[i] = 1e-30;
         P.temperature[i] = T;
     }
 }
@@ -132,8 +131,13 @@ result run
     const vector n01 =
         normalised(with.particles().position[1] - with.particles().position[0]);
     const vector F = with.particles().force[0] - without.particles().force[0];
-    const contactHistory& h = with.pairs()[0].history;
-    return {F & n01, h.bridge, h.duration};
+    const scalar* h = with.pairs().stateOf(0);
+    return
+    {
+        F & n01,
+        h[with.cohesion().bridgeSlot()],
+        h[with.durationSlot()]
+    };
 }
 
 
@@ -165,14 +169,13 @@ scalar wallRun
         );
         e.setWalls(demWalls(points, faces));
         e.setWallTemperature(scalarField(1, Tw));
-        demParticles& P = e.particles();
-        P.clear();
+        demParticles& P = e.resetParticles();
         P.append
         (
             point(0.5*L, 0.5*L, rPrimary*(1 - 1e-3)), Zero, Zero, rPrimary, 5240, 0
         );
-        P.mass[0] = 1e30;
-        P.inertia[0] = 1e30;
+        P.invMass[0] = 1e-30;
+        P.invInertia[0] = 1e-30;
         P.temperature[0] = Tp;
         for (label s = 0; s < n; ++s)
         {
@@ -261,9 +264,15 @@ int main(int argc, char *argv[])
         check("bridged contacts after separating", e.nBridgedContacts(), 0, 0);
         x1 = touching;
         e.step(dt);
-        const contactHistory& h = e.pairs()[0].history;
-        check("contact time of the new contact [s]", h.duration, dt, 1e-12);
-        check("x^7 of the new contact/one step's", h.bridge, run(1, 1273.15, 1).x7, 1e-12);
+        const scalar* h = e.pairs().stateOf(0);
+        check("contact time of the new contact [s]", h[e.durationSlot()], dt, 1e-12);
+        check
+        (
+            "x^7 of the new contact/one step's",
+            h[e.cohesion().bridgeSlot()],
+            run(1, 1273.15, 1).x7,
+            1e-12
+        );
     }
 
     // A wall contact sinters at the wall's temperature (default) or at the

@@ -6,9 +6,6 @@
 
 namespace Foam
 {
-    typedef DEMParcel<CollidingParcel<KinematicParcel<particle>>>
-        sinterDEMParcel;
-    defineTemplateTypeNameAndDebug(sinterDEMParcel, 0);
     defineTemplateTypeNameAndDebug(basicSinterParcel, 0);
     defineTemplateTypeNameAndDebug(Cloud<basicSinterParcel>, 0);
 }

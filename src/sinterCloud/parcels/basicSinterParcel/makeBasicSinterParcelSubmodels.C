@@ -8,7 +8,6 @@
 #include "makeThermoParcelForces.H"
 #include "makeParcelDispersionModels.H"
 #include "makeParcelInjectionModels.H"
-#include "makeParcelCollisionModels.H"
 #include "makeParcelPatchInteractionModels.H"
 #include "makeParcelStochasticCollisionModels.H"
 #include "makeThermoParcelSurfaceFilmModels.H"
@@ -18,14 +17,12 @@
 #include "VoidageDragForce.H"
 #include "GasPressureGradientForce.H"
 #include "WeightForce.H"
-#include "DEMCollision.H"
 
 // OpenFOAM's stock families
 makeParcelCloudFunctionObjects(basicSinterCloud);
 makeThermoParcelForces(basicSinterCloud);
 makeParcelDispersionModels(basicSinterCloud);
 makeParcelInjectionModels(basicSinterCloud);
-makeParcelCollisionModels(basicSinterCollidingCloud);
 makeParcelPatchInteractionModels(basicSinterCloud);
 makeParcelStochasticCollisionModels(basicSinterCloud);
 makeParcelSurfaceFilmModels(basicSinterCloud);
@@ -35,6 +32,3 @@ makeParcelHeatTransferModels(basicSinterCloud);
 makeParticleForceModelType(VoidageDragForce, basicSinterCloud);
 makeParticleForceModelType(GasPressureGradientForce, basicSinterCloud);
 makeParticleForceModelType(WeightForce, basicSinterCloud);
-
-// sinterFoam's DEM engine
-makeCollisionModelType(DEMCollision, basicSinterCloud);

@@ -14,12 +14,14 @@ Foam::autoPtr<Foam::cohesionModel> Foam::cohesionModel::New
 (
     const dictionary& dict,
     const contactLaw& law,
-    const scalar coarseGrainFactor
+    const scalar coarseGrainFactor,
+    contactSlots& slots
 )
 {
     const word modelType(dict.lookupOrDefault<word>("cohesionModel", "none"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
     if (!cstrIter.found())
     {
         FatalIOErrorInLookup
@@ -32,5 +34,6 @@ Foam::autoPtr<Foam::cohesionModel> Foam::cohesionModel::New
     }
 
     Info<< "Selecting cohesionModel " << modelType << endl;
-    return autoPtr<cohesionModel>(cstrIter()(dict, law, coarseGrainFactor));
+
+    return cstrIter()(dict, law, coarseGrainFactor, slots);
 }

@@ -90,16 +90,19 @@ Foam::scalar Foam::contactLaws::HertzMindlin::dampingFactor(const scalar e)
 Foam::contactLaws::HertzMindlin::HertzMindlin
 (
     const dictionary& dict,
-    const scalar coarseGrainFactor
+    const scalar coarseGrainFactor,
+    contactSlots& slots
 )
 :
-    contactLawTemplate<HertzMindlin>(dict, coarseGrainFactor, true),
+    contactLawTemplate<HertzMindlin>(dict, coarseGrainFactor, slots, true),
     YStarPP_(particle_.effectiveModulus(particle_)),
-    GStarPP_(particle_.effectiveShearModulus(particle_)),
     YStarPW_(particle_.effectiveModulus(wall_)),
-    GStarPW_(particle_.effectiveShearModulus(wall_)),
     alphaPP_(dampingFactor(particleParticle_.restitution())),
-    alphaPW_(dampingFactor(particleWall_.restitution()))
+    alphaPW_(dampingFactor(particleWall_.restitution())),
+    kappaPP_(4*particle_.effectiveShearModulus(particle_)/YStarPP_),
+    kappaPW_(4*particle_.effectiveShearModulus(wall_)/YStarPW_),
+    sqrtKappaPP_(sqrt(kappaPP_)),
+    sqrtKappaPW_(sqrt(kappaPW_))
 {}
 
 

@@ -14,6 +14,7 @@ Foam::contactLaw::contactLaw
 (
     const dictionary& dict,
     const scalar coarseGrainFactor,
+    contactSlots& slots,
     const bool restitution
 )
 :
@@ -21,14 +22,16 @@ Foam::contactLaw::contactLaw
     wall_(dict.subDict("wall")),
     particleParticle_(dict.subDict("particleParticle"), restitution),
     particleWall_(dict.subDict("particleWall"), restitution),
-    coarseGrainFactor_(coarseGrainFactor)
+    coarseGrainFactor_(coarseGrainFactor),
+    springSlot_(slots.addVector("spring", "contactLaw", true))
 {}
 
 
 Foam::autoPtr<Foam::contactLaw> Foam::contactLaw::New
 (
     const dictionary& dict,
-    const scalar coarseGrainFactor
+    const scalar coarseGrainFactor,
+    contactSlots& slots
 )
 {
     const word lawType(dict.get<word>("contactLaw"));
@@ -46,5 +49,5 @@ Foam::autoPtr<Foam::contactLaw> Foam::contactLaw::New
         ) << exit(FatalIOError);
     }
 
-    return cstrIter()(dict, coarseGrainFactor);
+    return cstrIter()(dict, coarseGrainFactor, slots);
 }

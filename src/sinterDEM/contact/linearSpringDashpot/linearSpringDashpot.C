@@ -42,10 +42,17 @@ Foam::scalar readNonNegative
 Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
 (
     const dictionary& dict,
-    const scalar coarseGrainFactor
+    const scalar coarseGrainFactor,
+    contactSlots& slots
 )
 :
-    contactLawTemplate<linearSpringDashpot>(dict, coarseGrainFactor, false)
+    contactLawTemplate<linearSpringDashpot>
+    (
+        dict,
+        coarseGrainFactor,
+        slots,
+        false
+    )
 {
     const dictionary& coeffs = dict.subDict(typeName + "Coeffs");
     const scalar K = coarseGrainFactor;

@@ -2,10 +2,167 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "DEMCloud.H"
-#include "DEMCollision.H"
-#include "HashTable.H"
-#include "globalIndex.H"
-#include "demContactRecord.H"
+#include "fvmSup.H"
+
+template<class CloudType>
+Foam::DEMCloud<CloudType>::DEMCloud
+(
+    const word& cloudName,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const dimensionedVector& g,
+    const SLGThermo& thermo,
+    bool readFields
+)
+:
+    CloudType(cloudName, rho, U, g, thermo, false)
+{
+    if (this->solution().active())
+    {
+        if (this->radiation())
+        {
+            FatalIOErrorInFunction(this->particleProperties())
+                << "radiation on in " << this->particleProperties().name()
+                << ": the DEM cloud does not take particle radiation"
+                << exit(FatalIOError);
+        }
+
+        collision_.reset
+        (
+            new DEMCollision<DEMCloud<CloudType>>
+            (
+                this->subModelProperties(),
+                *this
+            )
+        );
+
+        // The engine exists: the contact fields can be read
+        if (readFields)
+        {
+            parcelType::readFields(*this);
+            this->deleteLostParticles();
+        }
+    }
+}
+
+
+template<class CloudType>
+bool Foam::DEMCloud<CloudType>::heatImplicit() const
+{
+    return
+        this->solution().coupled()
+     && this->solution().semiImplicit("h")
+     && this->heatTransfer().active();
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::evolve()
+{
+    if (this->solution().canEvolve())
+    {
+        typename parcelType::trackingData td(*this);
+        this->solve(*this, td);
+    }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::DEMCloud<CloudType>::syncParticles(TrackCloudType& cloud)
+{
+    demEngine& engine = collision_->engine();
+    const demParticles& P = engine.particles();
+    const label nLocal = engine.nLocal();
+
+    bool same = this->size() == nLocal;
+    if (same)
+    {
+        label n = 0;
+        for (const parcelType& p : cloud)
+        {
+            if (p.demIndex() != n || P.identity[n] != p.identity())
+            {
+                same = false;
+                break;
+            }
+            ++n;
+        }
+    }
+    if (same)
+    {
+        return;
+    }
+
+    // Where each parcel was in the engine, or -1 (new, arrived, read)
+    labelList order(this->size());
+    label n = 0;
+    for (const parcelType& p : cloud)
+    {
+        const label k = p.demIndex();
+        order[n++] =
+            (k >= 0 && k < nLocal && P.identity[k] == p.identity()) ? k : -1;
+    }
+
+    engine.reorder(order);
+
+    demParticles& Q = engine.particles();
+    n = 0;
+    for (parcelType& p : cloud)
+    {
+        if (order[n] < 0)
+        {
+            Q.position[n] = p.position();
+            Q.velocity[n] = p.U();
+            Q.angularVelocity[n] = p.angularVelocity();
+            Q.force[n] = p.contactForce();
+            Q.torque[n] = p.contactTorque();
+            Q.setSphere(n, 0.5*p.d(), p.rho());
+            Q.identity[n] = p.identity();
+            if (p.records())
+            {
+                engine.addRecords(n, *p.records());
+                p.recordsPtr().clear();
+            }
+        }
+        p.demIndex() = n;
+        ++n;
+    }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::DEMCloud<CloudType>::unsupportedForce
+(
+    TrackCloudType& cloud,
+    const parcelType& p,
+    typename parcelType::trackingData& td,
+    const scalar dt
+) const
+{
+    wordList culprits;
+    const scalar m = p.mass();
+    const scalar Re = p.Re(td);
+    forAll(cloud.forces(), fi)
+    {
+        const auto& f = cloud.forces()[fi];
+        if
+        (
+            f.massAdd(p, td, m) != 0
+         || f.calcNonCoupled(p, td, dt, m, Re, td.muc()).Sp() != 0
+        )
+        {
+            culprits.append(f.type());
+        }
+    }
+    FatalIOErrorInFunction(this->particleProperties())
+        << "particleForces " << culprits << " in "
+        << this->particleProperties().name() << " add mass (virtual mass)"
+        << " or an implicit non-coupled force, which the DEM engine does"
+           " not take: remove them" << exit(FatalIOError);
+}
+
 
 template<class CloudType>
 template<class TrackCloudType>
@@ -15,71 +172,24 @@ void Foam::DEMCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
-    if (isA<demCollisionType>(this->collision()))
-    {
-        demMotion(cloud, td, refCast<demCollisionType>(this->collision()));
-    }
-    else
-    {
-        CloudType::motion(cloud, td);
-    }
-}
-
-
-namespace Foam
-{
-namespace DEMCloudDetail
-{
-
-//- A parcel's temperature [K] if it has one (thermo parcels), else 0
-template<class ParcelType>
-inline auto temperature(const ParcelType& p, int) -> decltype(p.T())
-{
-    return p.T();
-}
-
-template<class ParcelType>
-inline scalar temperature(const ParcelType&, long)
-{
-    return 0;
-}
-
-} // End namespace DEMCloudDetail
-} // End namespace Foam
-
-
-template<class CloudType>
-template<class TrackCloudType>
-void Foam::DEMCloud<CloudType>::demMotion
-(
-    TrackCloudType& cloud,
-    typename parcelType::trackingData& td,
-    demCollisionType& dem
-)
-{
     const scalar dt = this->db().time().deltaTValue();
-    const bool correctSource = this->solution().cellValueSourceCorrection();
-
-    demEngine& engine = dem.engine();
-    demParticles& P = engine.particles();
-    P.clear();
-
-    // 1. Fluid forces and heat over the step, at the start positions. The
-    //    drag (coupled, Sp (U_c - v)) is handed to the DEM with the gas
-    //    velocity, to act on the parcel's actual velocity in every sub-step;
-    //    the other forces become the external force. calc() does the heat
-    //    and the gas's implicit drag coefficient; its momentum transfer,
-    //    which assumes free flight over the step, is replaced by the DEM's
-    //    drag impulse (step 3).
-    DynamicList<parcelType*> parcels(this->size());
-    DynamicList<label> startCells(this->size());
-    const globalIndex identities(this->size());
     const bool coupled = this->solution().coupled();
+    const bool correctSource = this->solution().cellValueSourceCorrection();
+    const bool implicitHeat = heatImplicit();
 
+    // 1. The engine's particles follow the parcels
+    syncParticles(cloud);
+
+    demEngine& engine = collision_->engine();
+    demParticles& P = engine.particles();
+    const label nLocal = engine.nLocal();
+
+    // 2. Fluid forces and heat, once per parcel, at the start position
+    sourceCell_.setSize(nLocal);
+    heatFraction_.setSize(nLocal);
+    label n = 0;
     for (parcelType& p : cloud)
     {
-        const vector U0 = p.U();
-
         p.setCellValues(cloud, td);
         p.calcDispersion(cloud, td, dt);
         if (correctSource)
@@ -87,180 +197,172 @@ void Foam::DEMCloud<CloudType>::demMotion
             p.cellValueSourceCorrection(cloud, td, dt);
         }
 
-        const scalar m0 = p.mass();
+        const label celli = p.cell();
+        const scalar np = p.nParticle();
+        const scalar m = p.mass();
         const scalar Re = p.Re(td);
         const forceSuSp Fcp =
-            cloud.forces().calcCoupled(p, td, dt, m0, Re, td.muc());
+            cloud.forces().calcCoupled(p, td, dt, m, Re, td.muc());
         const forceSuSp Fncp =
-            cloud.forces().calcNonCoupled(p, td, dt, m0, Re, td.muc());
-
-        const label celli = p.cell();
-        const vector UTrans0 = this->UTrans()[celli];
-        p.calc(cloud, td, dt);
-        this->UTrans()[celli] = UTrans0;
-
-        const scalar m = p.mass();
-        const scalar r = 0.5*p.d();
-        const scalar I = 0.4*m*r*r;
-
-        const label i = P.append
-        (
-            p.position(),
-            U0,
-            p.angularMomentum()/I,
-            r,
-            p.rho(),
-            identities.toGlobal(parcels.size())
-        );
-        P.origin[i] = labelPair(p.origProc(), p.origId());
-        P.mass[i] = m;
-        P.inertia[i] = I;
-        P.temperature[i] = DEMCloudDetail::temperature(p, 0);
-        P.externalForce[i] = Fcp.Su() + Fncp.Su();
-        P.dragCoeff[i] = Fcp.Sp();
-        P.fluidVelocity[i] = td.Uc();
-
-        p.U() = U0;
-        parcels.append(&p);
-        startCells.append(celli);
-    }
-
-    // Ghosts of the neighbouring processors (decomposed runs)
-    engine.exchange();
-    const label nLocal = parcels.size();
-
-    HashTable<label, labelPair, labelPair::Hash<>> index(2*P.size());
-    forAll(P.origin, i)
-    {
-        index.insert(P.origin[i], i);
-    }
-
-    // Histories stored on the parcels: each pair from its lower index
-    DynamicList<contactPair> pairs;
-    DynamicList<wallContactRecord> walls;
-    forAll(parcels, i)
-    {
-        for (const demContactRecord& r : parcels[i]->contacts())
+            cloud.forces().calcNonCoupled(p, td, dt, m, Re, td.muc());
+        if (Fncp.Sp() != 0 || cloud.forces().massEff(p, td, m) != m)
         {
-            if (r.wall())
-            {
-                walls.append(wallContactRecord{i, r.faceCentre, r.history});
-            }
-            else
-            {
-                const auto iter = index.cfind(labelPair(r.proc, r.id));
-                if (iter.found() && i < *iter)
-                {
-                    pairs.append(contactPair{i, *iter, r.history});
-                }
-            }
+            unsupportedForce(cloud, p, td, dt);
         }
-    }
-    engine.restoreHistory(pairs, walls);
 
-    // 2. DEM sub-steps
-    const label nSub = dem.nSubSteps(dt);
-    const scalar dtDEM = dt/nSub;
+        scalar dhsTrans, hAdt;
+        const scalar T0 = p.T();
+        p.T() = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
+        const scalar mCp = m*p.Cp();
+        const scalar fraction =
+            implicitHeat && mCp > 0 ? -std::expm1(-hAdt/mCp) : 0;
 
-    if (engine.cohesion().active())
-    {
-        dem.setWallTemperature();
-    }
-    engine.setTime(this->db().time().value() - dt);
-    engine.initialise();
-    for (label k = 0; k < nSub; ++k)
-    {
-        engine.step(dtDEM);
-    }
-
-    // 3. Results onto the parcels, histories of the active contacts; the
-    //    gas loses the momentum the drag gave the parcels
-    forAll(parcels, i)
-    {
-        parcelType& p = *parcels[i];
         if (coupled)
         {
-            this->UTrans()[startCells[i]] -= p.nParticle()*P.dragImpulse[i];
+            this->UCoeff()[celli] += np*dt*Fcp.Sp();
+            this->UTrans()[celli] -= np*dt*Fcp.Su();
+            this->hsTrans()[celli] += np*dhsTrans;
+            this->hsCoeff()[celli] += np*mCp*fraction;
         }
-        p.displacement() = P.position[i] - p.position();
-        p.U() = P.velocity[i];
-        p.angularMomentum() = P.inertia[i]*P.angularVelocity[i];
-        p.f() = P.force[i] - P.externalForce[i];
-        p.torque() = P.torque[i];
+
+        P.position[n] = p.position();
+        P.externalForce[n] = Fcp.Su() + Fncp.Su();
+        P.dragCoeff[n] = Fcp.Sp();
+        P.fluidVelocity[n] = td.Uc();
+        P.temperature[n] = T0;
+        sourceCell_[n] = celli;
+        heatFraction_[n] = fraction;
+        ++n;
     }
 
-    // A pair with a ghost is stored on the local parcel only (the ghost's
-    // owner keeps its own copy)
-    labelList nContacts(nLocal, 0);
-    for (const contactPair& c : engine.pairs())
-    {
-        if (c.history.active())
-        {
-            ++nContacts[c.i];
-            if (c.j < nLocal)
-            {
-                ++nContacts[c.j];
-            }
-        }
-    }
-    for (const wallContact& c : engine.wallContacts())
-    {
-        if (c.history.active())
-        {
-            ++nContacts[c.i];
-        }
-    }
-    forAll(parcels, i)
-    {
-        parcels[i]->contacts().setSize(nContacts[i]);
-        nContacts[i] = 0;
-    }
-    for (const contactPair& c : engine.pairs())
-    {
-        if (c.history.active())
-        {
-            demContactRecord& ri = parcels[c.i]->contacts()[nContacts[c.i]++];
-            ri.proc = P.origin[c.j].first();
-            ri.id = P.origin[c.j].second();
-            ri.history = c.history;
+    // 3. The DEM sub-steps
+    collision_->collide(dt);
 
-            if (c.j < nLocal)
-            {
-                demContactRecord& rj =
-                    parcels[c.j]->contacts()[nContacts[c.j]++];
-                rj.proc = P.origin[c.i].first();
-                rj.id = P.origin[c.i].second();
-                rj.history = c.history;
-                rj.history.tangentialSpring = -c.history.tangentialSpring;
-            }
-        }
-    }
-    for (const wallContact& c : engine.wallContacts())
+    // 4. Results onto the parcels; the gas loses the drag impulse
+    n = 0;
+    for (parcelType& p : cloud)
     {
-        if (c.history.active())
+        if (coupled)
         {
-            demContactRecord& r = parcels[c.i]->contacts()[nContacts[c.i]++];
-            r.proc = -1;
-            r.id = -1;
-            r.faceCentre = engine.walls().centre(c.face);
-            r.history = c.history;
+            this->UTrans()[sourceCell_[n]] -= p.nParticle()*P.dragImpulse[n];
         }
+        p.displacement() = P.position[n] - p.position();
+        p.U() = P.velocity[n];
+        p.angularVelocity() = P.angularVelocity[n];
+        p.contactForce() = P.force[n];
+        p.contactTorque() = P.torque[n];
+        ++n;
     }
 
-    Info<< "    DEM: " << nSub << " sub-steps of " << dtDEM << " s, "
-        << returnReduce(engine.nPairContacts(), sumOp<label>())
-        << " particle-particle and "
-        << returnReduce(engine.nWallContacts(), sumOp<label>())
-        << " particle-wall contacts";
-    if (engine.cohesion().active())
+    // A time to be written: the lists are built again from the written
+    // state, as a restart from it builds them (bit-identical restart)
+    if (this->db().time().writeTime())
     {
-        Info<< ", " << returnReduce(engine.nBridgedContacts(), sumOp<label>())
-            << " bridged";
+        engine.invalidateLists();
     }
-    Info<< endl;
 
-    // 4. One track per parcel along its DEM displacement
-    demActive_ = true;
+    // 5. One track per parcel along its displacement
     CloudType::move(cloud, td, dt);
-    demActive_ = false;
+    this->updateCellOccupancy();
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::parcelLeaves
+(
+    parcelType& p,
+    const bool transfer
+)
+{
+    const label k = p.demIndex();
+    if (k < 0 || k >= heatFraction_.size())
+    {
+        return;
+    }
+
+    if (heatFraction_[k] != 0)
+    {
+        this->hsCoeff()[sourceCell_[k]] -=
+            p.nParticle()*p.mass()*p.Cp()*heatFraction_[k];
+        heatFraction_[k] = 0;
+    }
+
+    if (transfer)
+    {
+        p.recordsPtr().reset(new contactRecords());
+        collision_->engine().recordsOf(k, p.recordsPtr()());
+        if (p.recordsPtr()().empty())
+        {
+            p.recordsPtr().clear();
+        }
+    }
+    p.demIndex() = -1;
+}
+
+
+template<class CloudType>
+Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
+(
+    volScalarField& hs
+) const
+{
+    if (!this->solution().coupled())
+    {
+        return tmp<fvScalarMatrix>::New(hs, dimEnergy/dimTime);
+    }
+
+    const volScalarField::Internal Vdt
+    (
+        this->mesh().V()*this->db().time().deltaT()
+    );
+
+    if (!heatImplicit())
+    {
+        tmp<fvScalarMatrix> tfvm(new fvScalarMatrix(hs, dimEnergy/dimTime));
+        tfvm.ref().source() =
+            -this->hsTrans().field()/this->db().time().deltaTValue();
+        return tfvm;
+    }
+
+    const volScalarField Cp(this->thermo().thermo().Cp());
+    const volScalarField::Internal K(this->hsCoeff()/(Cp()*Vdt));
+
+    return this->hsTrans()/Vdt - fvm::Sp(K, hs) + K*hs.oldTime()();
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::correctHeatExchange()
+{
+    if (!heatImplicit())
+    {
+        return;
+    }
+
+    const volScalarField& hs = this->thermo().thermo().he();
+    const volScalarField Cp(this->thermo().thermo().Cp());
+    const scalarField dTg
+    (
+        (hs.primitiveField() - hs.oldTime().primitiveField())
+       /Cp.primitiveField()
+    );
+
+    for (parcelType& p : *this)
+    {
+        const label k = p.demIndex();
+        if (k >= 0 && k < heatFraction_.size())
+        {
+            p.T() += heatFraction_[k]*dTg[sourceCell_[k]];
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::writeFields() const
+{
+    if (this->size() && collision_.valid())
+    {
+        parcelType::writeFields(*this);
+    }
 }

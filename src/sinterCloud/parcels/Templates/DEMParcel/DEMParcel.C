@@ -5,6 +5,30 @@
 
 template<class ParcelType>
 template<class TrackCloudType>
+Foam::scalar Foam::DEMParcel<ParcelType>::calcGasHeat
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar dt,
+    scalar& dhsTrans,
+    scalar& hAdt
+)
+{
+    scalar Ts, rhos, mus, Pr, kappas;
+    this->calcSurfaceValues(cloud, td, this->T(), Ts, rhos, mus, Pr, kappas);
+    const scalar Re = this->Re(rhos, this->U(), td.Uc(), this->d(), mus);
+
+    dhsTrans = 0;
+    hAdt = 0;
+    return this->calcHeatTransfer
+    (
+        cloud, td, dt, Re, Pr, kappas, 0, 0, dhsTrans, hAdt
+    );
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
 bool Foam::DEMParcel<ParcelType>::move
 (
     TrackCloudType& cloud,
@@ -12,11 +36,6 @@ bool Foam::DEMParcel<ParcelType>::move
     const scalar trackTime
 )
 {
-    if (!cloud.demActive())
-    {
-        return ParcelType::move(cloud, td, trackTime);
-    }
-
     typename TrackCloudType::parcelType& p =
         static_cast<typename TrackCloudType::parcelType&>(*this);
     typename TrackCloudType::parcelType::trackingData& ttd =
@@ -56,6 +75,11 @@ bool Foam::DEMParcel<ParcelType>::move
         }
     }
 
+    if (!ttd.keepParticle || ttd.switchProcessor)
+    {
+        cloud.parcelLeaves(p, ttd.keepParticle);
+    }
+
     return ttd.keepParticle;
 }
 
@@ -64,10 +88,13 @@ template<class ParcelType>
 void Foam::DEMParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
+    angularVelocity_ = transform(T, angularVelocity_);
+    contactForce_ = transform(T, contactForce_);
+    contactTorque_ = transform(T, contactTorque_);
     displacement_ = transform(T, displacement_);
-    for (demContactRecord& r : contacts_)
+    if (records_.valid())
     {
-        r.history.tangentialSpring = transform(T, r.history.tangentialSpring);
+        records_->transform(T);
     }
 }
 

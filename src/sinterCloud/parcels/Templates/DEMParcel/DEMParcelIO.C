@@ -4,6 +4,7 @@
 #include "DEMParcel.H"
 #include "IOstreams.H"
 #include "IOField.H"
+#include "PtrList.H"
 
 template<class ParcelType>
 Foam::string Foam::DEMParcel<ParcelType>::propertyList_ =
@@ -20,107 +21,265 @@ Foam::DEMParcel<ParcelType>::DEMParcel
 )
 :
     ParcelType(mesh, is, readFields, newFormat),
+    angularVelocity_(Zero),
+    contactForce_(Zero),
+    contactTorque_(Zero),
     displacement_(Zero),
-    contacts_()
+    demIndex_(-1)
 {
     if (readFields)
     {
-        is >> displacement_ >> contacts_;
+        contactRecords records;
+        is >> angularVelocity_ >> contactForce_ >> contactTorque_ >> records;
+        if (records.size())
+        {
+            records_.reset(new contactRecords(std::move(records)));
+        }
     }
 
     is.check(FUNCTION_NAME);
 }
 
 
+namespace Foam
+{
+namespace DEMParcelDetail
+{
+
+//- A lagrangian field of the cloud if its file is there (on any processor)
+template<class FieldType, class CloudType>
+bool present(const CloudType& c, const word& name)
+{
+    return returnReduce
+    (
+        c.fieldIOobject(name, IOobject::MUST_READ)
+            .template typeHeaderOk<FieldType>(true),
+        orOp<bool>()
+    );
+}
+
+
+//- The cloud's contact slots (DEMCloud); other layers cannot say
+template<class CloudType>
+inline auto slotsOf(const CloudType& c, int) -> decltype(c.contactSlotLayout())
+{
+    return c.contactSlotLayout();
+}
+
+template<class CloudType>
+inline const contactSlots& slotsOf(const CloudType& c, long)
+{
+    FatalErrorInFunction
+        << "The DEM parcel's fields are read and written by the DEM cloud"
+           " layer (DEMCloud), not by " << c.name() << abort(FatalError);
+    static const contactSlots none;
+    return none;
+}
+
+//- The contacts of the engine's particle i (DEMCloud)
+template<class CloudType>
+inline auto recordsOf
+(
+    const CloudType& c,
+    const label i,
+    contactRecords& r,
+    int
+) -> decltype(c.contactRecordsOf(i, r))
+{
+    return c.contactRecordsOf(i, r);
+}
+
+template<class CloudType>
+inline void recordsOf(const CloudType& c, const label, contactRecords&, long)
+{
+    slotsOf(c, 0L);
+}
+
+} // End namespace DEMParcelDetail
+} // End namespace Foam
+
+
 template<class ParcelType>
 template<class CloudType>
 void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
 {
+    using namespace DEMParcelDetail;
+
     ParcelType::readFields(c);
 
-    // Absent when the run before used another collision model: the DEM
-    // then starts without contacts, and says so
-    const bool found = returnReduce
-    (
-        c.fieldIOobject("demContactPartner", IOobject::MUST_READ)
-            .template typeHeaderOk<labelFieldCompactIOField>(true),
-        orOp<bool>()
-    );
+    const bool valid = c.size();
+    const word time(c.db().time().timeName());
 
-    if (!found)
+    // Spin and the engine's last forces; absent after a run with another
+    // cloud: the parcels start without them, and say so
+    const wordList vectors({"angularVelocity", "contactForce", "contactTorque"});
+    List<vectorField> values(3);
+    forAll(vectors, v)
     {
-        if (returnReduce(c.size(), sumOp<label>()))
+        if (present<IOField<vector>>(c, vectors[v]))
         {
-            Info<< "    No demContact fields in " << c.db().time().timeName()
-                << ": parcels start without contact histories" << endl;
+            IOField<vector> f
+            (
+                c.fieldIOobject(vectors[v], IOobject::MUST_READ),
+                valid
+            );
+            c.checkFieldIOobject(c, f);
+            values[v].transfer(f);
         }
-        return;
+        else
+        {
+            if (returnReduce(c.size(), sumOp<label>()))
+            {
+                Info<< "    No " << vectors[v] << " in " << time
+                    << ": parcels start with zero " << vectors[v] << endl;
+            }
+            values[v].setSize(c.size(), Zero);
+        }
     }
 
-    const bool valid = c.size();
+    // Contacts: the partner, then one field-field per declared slot
+    const contactSlots& slots = slotsOf(c, 0);
+    const bool haveContacts =
+        present<labelFieldCompactIOField>(c, "demContactPartner");
+    if (!haveContacts && returnReduce(c.size(), sumOp<label>()))
+    {
+        Info<< "    No demContact fields in " << time
+            << ": parcels start without contact histories" << endl;
+    }
 
-    labelFieldCompactIOField partner
-    (
-        c.fieldIOobject("demContactPartner", IOobject::MUST_READ),
-        valid
-    );
-    c.checkFieldFieldIOobject(c, partner);
+    autoPtr<labelFieldCompactIOField> partner;
+    autoPtr<vectorFieldCompactIOField> faceCentre;
+    PtrList<scalarFieldCompactIOField> scalarSlots(slots.slots().size());
+    PtrList<vectorFieldCompactIOField> vectorSlots(slots.slots().size());
 
-    vectorFieldCompactIOField faceCentre
-    (
-        c.fieldIOobject("demContactFaceCentre", IOobject::MUST_READ),
-        valid
-    );
-    c.checkFieldFieldIOobject(c, faceCentre);
+    if (haveContacts)
+    {
+        partner.reset
+        (
+            new labelFieldCompactIOField
+            (
+                c.fieldIOobject("demContactPartner", IOobject::MUST_READ),
+                valid
+            )
+        );
+        c.checkFieldFieldIOobject(c, partner());
+        faceCentre.reset
+        (
+            new vectorFieldCompactIOField
+            (
+                c.fieldIOobject("demContactFaceCentre", IOobject::MUST_READ),
+                valid
+            )
+        );
+        c.checkFieldFieldIOobject(c, faceCentre());
 
-    vectorFieldCompactIOField spring
-    (
-        c.fieldIOobject("demContactSpring", IOobject::MUST_READ),
-        valid
-    );
-    c.checkFieldFieldIOobject(c, spring);
+        forAll(slots.slots(), si)
+        {
+            const contactSlots::slot& s = slots.slots()[si];
+            const word name(contactSlots::fieldName(s));
+            if (s.isVector)
+            {
+                if (present<vectorFieldCompactIOField>(c, name))
+                {
+                    vectorSlots.set
+                    (
+                        si,
+                        new vectorFieldCompactIOField
+                        (
+                            c.fieldIOobject(name, IOobject::MUST_READ),
+                            valid
+                        )
+                    );
+                    c.checkFieldFieldIOobject(c, vectorSlots[si]);
+                }
+            }
+            else if (present<scalarFieldCompactIOField>(c, name))
+            {
+                scalarSlots.set
+                (
+                    si,
+                    new scalarFieldCompactIOField
+                    (
+                        c.fieldIOobject(name, IOobject::MUST_READ),
+                        valid
+                    )
+                );
+                c.checkFieldFieldIOobject(c, scalarSlots[si]);
+            }
+            if
+            (
+                !vectorSlots.set(si) && !scalarSlots.set(si)
+             && returnReduce(c.size(), sumOp<label>())
+            )
+            {
+                Info<< "    No " << name << " in " << time
+                    << ": the contacts start with zero " << s.name
+                    << " (" << s.owner << ")" << endl;
+            }
+        }
+    }
 
-    scalarFieldCompactIOField duration
-    (
-        c.fieldIOobject("demContactDuration", IOobject::MUST_READ),
-        valid
-    );
-    c.checkFieldFieldIOobject(c, duration);
-
-    scalarFieldCompactIOField bridge
-    (
-        c.fieldIOobject("demContactBridge", IOobject::MUST_READ),
-        valid
-    );
-    c.checkFieldFieldIOobject(c, bridge);
-
+    const labelList vectorOffsets(slots.vectorOffsets());
     label i = 0;
     for (DEMParcel<ParcelType>& p : c)
     {
-        const label n = spring[i].size();
+        p.angularVelocity_ = values[0][i];
+        p.contactForce_ = values[1][i];
+        p.contactTorque_ = values[2][i];
 
-        if
-        (
-            partner[i].size() != 2*n || faceCentre[i].size() != n
-         || duration[i].size() != n || bridge[i].size() != n
-        )
+        if (haveContacts && partner()[i].size())
         {
-            FatalErrorInFunction
-                << "Inconsistent demContact fields of parcel " << i
-                << " in " << c.db().time().timePath()
-                << exit(FatalError);
-        }
+            const label n = partner()[i].size()/2;
+            bool consistent =
+                partner()[i].size() == 2*n && faceCentre()[i].size() == n;
+            forAll(slots.slots(), si)
+            {
+                if (vectorSlots.set(si))
+                {
+                    consistent = consistent && vectorSlots[si][i].size() == n;
+                }
+                if (scalarSlots.set(si))
+                {
+                    consistent = consistent && scalarSlots[si][i].size() == n;
+                }
+            }
+            if (!consistent)
+            {
+                FatalErrorInFunction
+                    << "Inconsistent demContact fields of parcel " << i
+                    << " in " << c.db().time().timePath()
+                    << exit(FatalError);
+            }
 
-        p.contacts_.setSize(n);
-        forAll(p.contacts_, k)
-        {
-            demContactRecord& r = p.contacts_[k];
-            r.proc = partner[i][2*k];
-            r.id = partner[i][2*k + 1];
-            r.faceCentre = faceCentre[i][k];
-            r.history.tangentialSpring = spring[i][k];
-            r.history.duration = duration[i][k];
-            r.history.bridge = bridge[i][k];
+            p.records_.reset(new contactRecords());
+            contactRecords& r = p.records_();
+            r.setSize(n, slots.stride(), vectorOffsets);
+            r.state = 0;
+            for (label k = 0; k < n; ++k)
+            {
+                const label proc = partner()[i][2*k];
+                r.partner[k] =
+                    proc < 0
+                  ? demIdentity(-1)
+                  : makeIdentity(proc, partner()[i][2*k + 1]);
+                r.faceCentre[k] = faceCentre()[i][k];
+                scalar* b = r.stateOf(k);
+                forAll(slots.slots(), si)
+                {
+                    const label o = slots.slots()[si].offset;
+                    if (vectorSlots.set(si))
+                    {
+                        const vector& v = vectorSlots[si][i][k];
+                        b[o] = v.x();
+                        b[o + 1] = v.y();
+                        b[o + 2] = v.z();
+                    }
+                    else if (scalarSlots.set(si))
+                    {
+                        b[o] = scalarSlots[si][i][k];
+                    }
+                }
+            }
         }
         ++i;
     }
@@ -131,11 +290,29 @@ template<class ParcelType>
 template<class CloudType>
 void Foam::DEMParcel<ParcelType>::writeFields(const CloudType& c)
 {
+    using namespace DEMParcelDetail;
+
     ParcelType::writeFields(c);
 
     const label np = c.size();
     const bool valid = np;
+    const contactSlots& slots = slotsOf(c, 0);
 
+    IOField<vector> angularVelocity
+    (
+        c.fieldIOobject("angularVelocity", IOobject::NO_READ),
+        np
+    );
+    IOField<vector> contactForce
+    (
+        c.fieldIOobject("contactForce", IOobject::NO_READ),
+        np
+    );
+    IOField<vector> contactTorque
+    (
+        c.fieldIOobject("contactTorque", IOobject::NO_READ),
+        np
+    );
     labelFieldCompactIOField partner
     (
         c.fieldIOobject("demContactPartner", IOobject::NO_READ),
@@ -146,50 +323,95 @@ void Foam::DEMParcel<ParcelType>::writeFields(const CloudType& c)
         c.fieldIOobject("demContactFaceCentre", IOobject::NO_READ),
         np
     );
-    vectorFieldCompactIOField spring
-    (
-        c.fieldIOobject("demContactSpring", IOobject::NO_READ),
-        np
-    );
-    scalarFieldCompactIOField duration
-    (
-        c.fieldIOobject("demContactDuration", IOobject::NO_READ),
-        np
-    );
-    scalarFieldCompactIOField bridge
-    (
-        c.fieldIOobject("demContactBridge", IOobject::NO_READ),
-        np
-    );
+    PtrList<scalarFieldCompactIOField> scalarSlots(slots.slots().size());
+    PtrList<vectorFieldCompactIOField> vectorSlots(slots.slots().size());
+    forAll(slots.slots(), si)
+    {
+        const contactSlots::slot& s = slots.slots()[si];
+        const IOobject io
+        (
+            c.fieldIOobject(contactSlots::fieldName(s), IOobject::NO_READ)
+        );
+        if (s.isVector)
+        {
+            vectorSlots.set(si, new vectorFieldCompactIOField(io, np));
+        }
+        else
+        {
+            scalarSlots.set(si, new scalarFieldCompactIOField(io, np));
+        }
+    }
 
+    contactRecords engineRecords;
     label i = 0;
     for (const DEMParcel<ParcelType>& p : c)
     {
-        const label n = p.contacts_.size();
+        angularVelocity[i] = p.angularVelocity_;
+        contactForce[i] = p.contactForce_;
+        contactTorque[i] = p.contactTorque_;
+
+        // Off the engine (arrived this step), or from it
+        const contactRecords* r = p.records_.get();
+        if (!r && p.demIndex_ >= 0)
+        {
+            recordsOf(c, p.demIndex_, engineRecords, 0);
+            r = &engineRecords;
+        }
+        const label n = r ? r->size() : 0;
+
         partner[i].setSize(2*n);
         faceCentre[i].setSize(n);
-        spring[i].setSize(n);
-        duration[i].setSize(n);
-        bridge[i].setSize(n);
-
-        forAll(p.contacts_, k)
+        forAll(slots.slots(), si)
         {
-            const demContactRecord& r = p.contacts_[k];
-            partner[i][2*k] = r.proc;
-            partner[i][2*k + 1] = r.id;
-            faceCentre[i][k] = r.faceCentre;
-            spring[i][k] = r.history.tangentialSpring;
-            duration[i][k] = r.history.duration;
-            bridge[i][k] = r.history.bridge;
+            if (vectorSlots.set(si))
+            {
+                vectorSlots[si][i].setSize(n);
+            }
+            else
+            {
+                scalarSlots[si][i].setSize(n);
+            }
+        }
+        for (label k = 0; k < n; ++k)
+        {
+            const demIdentity id = r->partner[k];
+            partner[i][2*k] = contactRecords::isWall(id) ? -1 : identityProc(id);
+            partner[i][2*k + 1] =
+                contactRecords::isWall(id) ? -1 : identityIndex(id);
+            faceCentre[i][k] = r->faceCentre[k];
+            const scalar* b = r->stateOf(k);
+            forAll(slots.slots(), si)
+            {
+                const label o = slots.slots()[si].offset;
+                if (vectorSlots.set(si))
+                {
+                    vectorSlots[si][i][k] = vector(b[o], b[o + 1], b[o + 2]);
+                }
+                else
+                {
+                    scalarSlots[si][i][k] = b[o];
+                }
+            }
         }
         ++i;
     }
 
+    angularVelocity.write(valid);
+    contactForce.write(valid);
+    contactTorque.write(valid);
     partner.write(valid);
     faceCentre.write(valid);
-    spring.write(valid);
-    duration.write(valid);
-    bridge.write(valid);
+    forAll(slots.slots(), si)
+    {
+        if (vectorSlots.set(si))
+        {
+            vectorSlots[si].write(valid);
+        }
+        else
+        {
+            scalarSlots[si].write(valid);
+        }
+    }
 }
 
 
@@ -201,8 +423,18 @@ Foam::Ostream& Foam::operator<<
 )
 {
     os  << static_cast<const ParcelType&>(p)
-        << token::SPACE << p.displacement_
-        << token::SPACE << p.contacts_;
+        << token::SPACE << p.angularVelocity_
+        << token::SPACE << p.contactForce_
+        << token::SPACE << p.contactTorque_
+        << token::SPACE;
+    if (p.records_.valid())
+    {
+        os << p.records_();
+    }
+    else
+    {
+        os << contactRecords();
+    }
 
     os.check(FUNCTION_NAME);
     return os;

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "DEMCollision.H"
+#include "demHalo.H"
 #include "coarseGrainFactor.H"
 #include "wallPolyPatch.H"
 #include "volFields.H"
@@ -9,8 +10,8 @@
 template<class CloudType>
 Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
 {
-    const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
-    const dictionary& dict = this->coeffDict();
+    const polyBoundaryMesh& patches = owner_.mesh().boundaryMesh();
+    const dictionary& dict = coeffs_;
 
     labelHashSet ids;
     if (dict.found("walls"))
@@ -42,7 +43,7 @@ Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
 template<class CloudType>
 Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
 {
-    const polyMesh& mesh = this->owner().mesh();
+    const polyMesh& mesh = owner_.mesh();
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
     DynamicList<face> faces;
@@ -60,33 +61,41 @@ Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
 
 
 template<class CloudType>
+const Foam::dictionary& Foam::DEMCollision<CloudType>::coeffDict
+(
+    const dictionary& subModels
+)
+{
+    const word typeName(modelName());
+    const word model(subModels.get<word>("collisionModel"));
+    if (model != typeName)
+    {
+        FatalIOErrorInFunction(subModels)
+            << "Unknown collisionModel type " << model << " in "
+            << subModels.name() << nl << nl
+            << "Valid collisionModel types are" << nl
+            << "1(" << typeName << ")" << nl
+            << exit(FatalIOError);
+    }
+    return subModels.subDict(typeName + "Coeffs");
+}
+
+
+template<class CloudType>
 Foam::DEMCollision<CloudType>::DEMCollision
 (
-    const dictionary& dict,
+    const dictionary& subModels,
     CloudType& owner
 )
 :
-    CollisionModel<CloudType>(dict, owner, typeName),
-    engine_
-    (
-        this->coeffDict(),
-        coarseGrainFactor(owner.constProps().dict())
-    ),
-    deltaT_(this->coeffDict().template lookupOrDefault<scalar>("deltaT", 0)),
-    fraction_
-    (
-        this->coeffDict().template lookupOrDefault<scalar>
-        (
-            "collisionTimeFraction",
-            0
-        )
-    ),
-    impactVelocity_
-    (
-        this->coeffDict().template lookupOrDefault<scalar>("impactVelocity", 1)
-    )
+    owner_(owner),
+    coeffs_(coeffDict(subModels)),
+    engine_(coeffs_, coarseGrainFactor(owner.constProps().dict())),
+    deltaT_(coeffs_.lookupOrDefault<scalar>("deltaT", 0)),
+    fraction_(coeffs_.lookupOrDefault<scalar>("collisionTimeFraction", 0)),
+    impactVelocity_(coeffs_.lookupOrDefault<scalar>("impactVelocity", 1))
 {
-    const dictionary& coeffs = this->coeffDict();
+    const dictionary& coeffs = coeffs_;
     const bool hasStep = coeffs.found("deltaT");
     const bool hasFraction = coeffs.found("collisionTimeFraction");
 
@@ -156,7 +165,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
 template<class CloudType>
 void Foam::DEMCollision<CloudType>::setWallTemperature()
 {
-    const fvMesh& mesh = this->owner().mesh();
+    const fvMesh& mesh = owner_.mesh();
     const volScalarField* T = mesh.findObject<volScalarField>("T");
     if (!T)
     {
@@ -177,22 +186,6 @@ void Foam::DEMCollision<CloudType>::setWallTemperature()
 
 
 template<class CloudType>
-Foam::DEMCollision<CloudType>::DEMCollision(const DEMCollision<CloudType>& cm)
-:
-    DEMCollision<CloudType>(cm.dict(), const_cast<CloudType&>(cm.owner()))
-{}
-
-
-template<class CloudType>
-void Foam::DEMCollision<CloudType>::collide()
-{
-    FatalErrorInFunction
-        << typeName << " needs the DEMCloud layer of the cloud"
-        << exit(FatalError);
-}
-
-
-template<class CloudType>
 Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
 {
     const demParticles& P = engine_.particles();
@@ -200,10 +193,10 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
     // The smallest parcel has the shortest contact
     scalar rMin = GREAT;
     scalar mMin = GREAT;
-    forAll(P.radius, i)
+    for (label i = 0; i < engine_.nLocal(); ++i)
     {
         rMin = min(rMin, P.radius[i]);
-        mMin = min(mMin, P.mass[i]);
+        mMin = min(mMin, P.mass(i));
     }
     reduce(rMin, minOp<scalar>());
     reduce(mMin, minOp<scalar>());
@@ -218,9 +211,9 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
 
     if (step > maxCollisionTimeFraction*tc*(1 + 1e-12))
     {
-        FatalIOErrorInFunction(this->coeffDict())
+        FatalIOErrorInFunction(coeffs_)
             << "Keyword deltaT " << step << " s in "
-            << this->coeffDict().name() << " is larger than "
+            << coeffs_.name() << " is larger than "
             << maxCollisionTimeFraction << " of the collision time "
             << tc << " s of the smallest parcel (radius " << rMin
             << " m, mass " << mMin << " kg) at impactVelocity "
@@ -229,4 +222,37 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
     }
 
     return max(label(1), label(std::ceil(dt/step*(1 - 1e-12))));
+}
+
+
+template<class CloudType>
+void Foam::DEMCollision<CloudType>::collide(const scalar dt)
+{
+    if (engine_.cohesion().active())
+    {
+        setWallTemperature();
+    }
+
+    const label nSub = nSubSteps(dt);
+    const scalar dtDEM = dt/nSub;
+
+    engine_.setTime(owner_.db().time().value() - dt);
+    engine_.beginStep();
+    for (label k = 0; k < nSub; ++k)
+    {
+        engine_.step(dtDEM);
+    }
+
+    Info<< "    DEM: " << nSub << " sub-steps of " << dtDEM << " s, "
+        << returnReduce(engine_.nPairContacts(), sumOp<label>())
+        << " particle-particle and "
+        << returnReduce(engine_.nWallContacts(), sumOp<label>())
+        << " particle-wall contacts";
+    if (engine_.cohesion().active())
+    {
+        Info<< ", "
+            << returnReduce(engine_.nBridgedContacts(), sumOp<label>())
+            << " bridged";
+    }
+    Info<< endl;
 }
