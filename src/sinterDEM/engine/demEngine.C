@@ -434,29 +434,64 @@ void Foam::demEngine::computeForces(const scalar deltaT)
 }
 
 
-void Foam::demEngine::kick(const scalar h)
+template<bool Drift, bool TwoKicks>
+bool Foam::demEngine::integrate(const scalar deltaT)
 {
     demParticles& P = particles_;
     const label nL = nLocal();
+    const scalar h = 0.5*deltaT;
 
+    vector* __restrict__ x = P.position.data();
     vector* __restrict__ v = P.velocity.data();
     vector* __restrict__ w = P.angularVelocity.data();
     vector* __restrict__ Jd = P.dragImpulse.data();
-    const vector* __restrict__ F = P.force.cdata();
-    const vector* __restrict__ M = P.torque.cdata();
+    vector* __restrict__ F = P.force.data();
+    vector* __restrict__ M = P.torque.data();
     const vector* __restrict__ Fext = P.externalForce.cdata();
     const vector* __restrict__ Uf = P.fluidVelocity.cdata();
     const scalar* __restrict__ beta = P.dragCoeff.cdata();
     const scalar* __restrict__ invM = P.invMass.cdata();
     const scalar* __restrict__ invI = P.invInertia.cdata();
+    const vector* __restrict__ x0 = builtAt_.cdata();
+    const bool track = builtAt_.size() == nL;
 
+    scalar moved2 = 0;
     for (label i = 0; i < nL; ++i)
     {
+        // v <- (v + h/m (F + F_ext + beta U_f))/(1 + h beta/m), once or
+        // twice with the same forces (the closing half of one step and
+        // the opening half of the next)
         const scalar hm = h*invM[i];
-        v[i] = (v[i] + hm*(F[i] + Fext[i] + beta[i]*Uf[i]))/(1 + hm*beta[i]);
-        w[i] += (h*invI[i])*M[i];
-        Jd[i] += (h*beta[i])*(Uf[i] - v[i]);
+        const scalar damp = 1/(1 + hm*beta[i]);
+        const vector push = hm*(F[i] + Fext[i] + beta[i]*Uf[i]);
+        const scalar hb = h*beta[i];
+
+        vector vi = (v[i] + push)*damp;
+        vector J = hb*(Uf[i] - vi);
+        vector wi = w[i] + (h*invI[i])*M[i];
+        if (TwoKicks)
+        {
+            vi = (vi + push)*damp;
+            J += hb*(Uf[i] - vi);
+            wi += (h*invI[i])*M[i];
+        }
+        v[i] = vi;
+        w[i] = wi;
+        Jd[i] += J;
+
+        if (Drift)
+        {
+            x[i] += deltaT*vi;
+            F[i] = Zero;
+            M[i] = Zero;
+            if (track)
+            {
+                moved2 = max(moved2, magSqr(x[i] - x0[i]));
+            }
+        }
     }
+
+    return !track || moved2 > sqr(0.5*skin_);
 }
 
 
@@ -505,7 +540,7 @@ void Foam::demEngine::initialise()
 }
 
 
-void Foam::demEngine::step(const scalar deltaT)
+void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 {
     if (nLocal_ < 0 || !listsValid_)
     {
@@ -514,38 +549,47 @@ void Foam::demEngine::step(const scalar deltaT)
 
     demParticles& P = particles_;
     const label nL = nLocal();
-    const scalar h = 0.5*deltaT;
 
-    kick(h);
+    for (label s = 0; s < nSteps; ++s)
     {
-        vector* __restrict__ x = P.position.data();
-        const vector* __restrict__ v = P.velocity.cdata();
-        for (label i = 0; i < nL; ++i)
+        // Kick(s) with the last forces, drift, forces cleared; whether a
+        // particle moved more than half the skin since the last build
+        bool expired =
+            s == 0
+          ? integrate<true, false>(deltaT)
+          : integrate<true, true>(deltaT);
+
+        vector* __restrict__ F = P.force.data();
+        vector* __restrict__ M = P.torque.data();
+        for (label i = nL; i < P.size(); ++i)
         {
-            x[i] += deltaT*v[i];
+            F[i] = Zero;
+            M[i] = Zero;
         }
-    }
 
-    if (halo_.valid())
-    {
-        // Ghosts at the new positions, then a rebuild everywhere if any
-        // processor needs one (the ghosts are chosen again with it)
-        halo_->update(P, nL);
-        if (returnReduce(listsExpired(), orOp<bool>()))
+        if (halo_.valid())
+        {
+            // Ghosts at the new positions, then a rebuild everywhere if any
+            // processor needs one (the ghosts are chosen again with it)
+            halo_->update(P, nL);
+            reduce(expired, orOp<bool>());
+        }
+        if (expired)
         {
             keepStates();
             rebuild();
         }
-    }
-    else if (listsExpired())
-    {
-        keepStates();
-        rebuild();
+
+        time_ += deltaT;
+        kernel_->pairs(P, pairs_, deltaT, time_);
+        kernel_->walls(P, wallContacts_, walls_, deltaT, time_);
     }
 
-    time_ += deltaT;
-    computeForces(deltaT);
-    kick(h);
+    // The closing half-kick; the forces stay for the next opening one
+    if (nSteps > 0)
+    {
+        integrate<false, false>(deltaT);
+    }
     recordIndexValid_ = false;
 }
 

@@ -19,6 +19,7 @@ Description
         engine particleStepsPerSecondPerCore X   (N S / C)
         engine contactsPerParticle Z   (2 x touching pairs / N)
         engine wallContacts W | listBuilds B (in the measured run)
+        engine candidatePairsPerParticle P  (2 x pairs in the lists / N)
         engine maxZ H (m) | meanKE K (J, translational, per particle)
 
 Usage
@@ -106,18 +107,12 @@ int main(int argc, char *argv[])
     }
 
     engine.initialise();
-    for (label step = 0; step < nSettle; ++step)
-    {
-        engine.step(dt);
-    }
+    engine.advance(dt, nSettle);
 
     const label builds0 = engine.nBuilds();
     const std::clock_t cpu0 = std::clock();
     const auto wall0 = std::chrono::steady_clock::now();
-    for (label step = 0; step < nSteps; ++step)
-    {
-        engine.step(dt);
-    }
+    engine.advance(dt, nSteps);
     const auto wall1 = std::chrono::steady_clock::now();
     const std::clock_t cpu1 = std::clock();
     const scalar loopTime =
@@ -141,6 +136,8 @@ int main(int argc, char *argv[])
         << "engine contactsPerParticle "
         << 2.0*engine.nPairContacts()/n << nl
         << "engine wallContacts " << engine.nWallContacts() << nl
+        << "engine candidatePairsPerParticle "
+        << 2.0*engine.pairs().size()/n << nl
         << "engine listBuilds " << engine.nBuilds() - builds0 << nl
         << "engine maxZ " << maxZ << nl
         << "engine meanKE " << ke/n << nl;

@@ -238,10 +238,7 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
 
     engine_.setTime(owner_.db().time().value() - dt);
     engine_.beginStep();
-    for (label k = 0; k < nSub; ++k)
-    {
-        engine_.step(dtDEM);
-    }
+    engine_.advance(dtDEM, nSub);
 
     Info<< "    DEM: " << nSub << " sub-steps of " << dtDEM << " s, "
         << returnReduce(engine_.nPairContacts(), sumOp<label>())
