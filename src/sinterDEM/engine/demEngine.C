@@ -44,6 +44,38 @@ void copyBlock(const Foam::scalar* from, Foam::scalar* to, const Foam::label n)
     }
 }
 
+//- Pending states of the particles that stay (newIndex >= 0), renumbered
+template<class Partner>
+void remapPending
+(
+    const Foam::labelUList& newIndex,
+    const Foam::label stride,
+    Foam::DynamicList<Foam::label>& particle,
+    Foam::DynamicList<Partner>& partner,
+    Foam::DynamicList<Foam::scalar>& state
+)
+{
+    using namespace Foam;
+    label n = 0;
+    forAll(particle, p)
+    {
+        const label i = newIndex[particle[p]];
+        if (i >= 0)
+        {
+            particle[n] = i;
+            partner[n] = partner[p];
+            if (n != p)
+            {
+                copyBlock(state.cdata() + p*stride, state.data() + n*stride, stride);
+            }
+            ++n;
+        }
+    }
+    particle.resize(n);
+    partner.resize(n);
+    state.resize(n*stride);
+}
+
 } // End anonymous namespace
 
 
@@ -84,10 +116,7 @@ Foam::demParticles& Foam::demEngine::resetParticles()
 {
     particles_.clear();
     nLocal_ = -1;
-    pendingParticle_.clear();
-    pendingPartner_.clear();
-    pendingCentre_.clear();
-    pendingState_.clear();
+    clearPending();
     pairs_.clear();
     wallContacts_.clear();
     builtAt_.clear();
@@ -129,21 +158,15 @@ Foam::scalar Foam::demEngine::maxRadius() const
 }
 
 
-void Foam::demEngine::addPending
-(
-    const label i,
-    const demIdentity partner,
-    const point& faceCentre,
-    const scalar* block
-)
+void Foam::demEngine::clearPending()
 {
-    pendingParticle_.append(i);
-    pendingPartner_.append(partner);
-    pendingCentre_.append(faceCentre);
-    for (label c = 0; c < slots_.stride(); ++c)
-    {
-        pendingState_.append(block[c]);
-    }
+    pendingPairParticle_.clearStorage();
+    pendingPairPartner_.clearStorage();
+    pendingPairState_.clearStorage();
+    pendingWallParticle_.clearStorage();
+    pendingWallCentre_.clearStorage();
+    pendingWallState_.clearStorage();
+    recordIndexValid_ = false;
 }
 
 
@@ -155,18 +178,37 @@ void Foam::demEngine::keepStates()
     }
 
     const label dur = durationSlot_;
+    const label stride = slots_.stride();
+
+    // Room for exactly the touching contacts, then the copies
+    label nPairs = 0;
+    for (label k = 0; k < pairs_.size(); ++k)
+    {
+        nPairs += pairs_.stateOf(k)[dur] > 0;
+    }
+    label nWalls = 0;
+    for (label k = 0; k < wallContacts_.size(); ++k)
+    {
+        nWalls += wallContacts_.stateOf(k)[dur] > 0;
+    }
+    pendingPairParticle_.setCapacity(pendingPairParticle_.size() + nPairs);
+    pendingPairPartner_.setCapacity(pendingPairPartner_.size() + nPairs);
+    pendingPairState_.setCapacity(pendingPairState_.size() + nPairs*stride);
+    pendingWallParticle_.setCapacity(pendingWallParticle_.size() + nWalls);
+    pendingWallCentre_.setCapacity(pendingWallCentre_.size() + nWalls);
+    pendingWallState_.setCapacity(pendingWallState_.size() + nWalls*stride);
+
     for (label k = 0; k < pairs_.size(); ++k)
     {
         const scalar* s = pairs_.stateOf(k);
         if (s[dur] > 0)
         {
-            addPending
-            (
-                pairs_.first[k],
-                particles_.identity[pairs_.second[k]],
-                Zero,
-                s
-            );
+            pendingPairParticle_.append(pairs_.first[k]);
+            pendingPairPartner_.append(particles_.identity[pairs_.second[k]]);
+            for (label c = 0; c < stride; ++c)
+            {
+                pendingPairState_.append(s[c]);
+            }
         }
     }
     for (label k = 0; k < wallContacts_.size(); ++k)
@@ -174,16 +216,16 @@ void Foam::demEngine::keepStates()
         const scalar* s = wallContacts_.stateOf(k);
         if (s[dur] > 0)
         {
-            addPending
-            (
-                wallContacts_.first[k],
-                -1,
-                walls_.centre(wallContacts_.second[k]),
-                s
-            );
+            pendingWallParticle_.append(wallContacts_.first[k]);
+            pendingWallCentre_.append(walls_.centre(wallContacts_.second[k]));
+            for (label c = 0; c < stride; ++c)
+            {
+                pendingWallState_.append(s[c]);
+            }
         }
     }
     listsValid_ = false;
+    recordIndexValid_ = false;
 }
 
 
@@ -209,31 +251,16 @@ void Foam::demEngine::reorder(const labelUList& order)
 
     // Pending states of the particles that stay, by their new index
     const label stride = slots_.stride();
-    label n = 0;
-    forAll(pendingParticle_, p)
-    {
-        const label i = newIndex[pendingParticle_[p]];
-        if (i >= 0)
-        {
-            pendingParticle_[n] = i;
-            pendingPartner_[n] = pendingPartner_[p];
-            pendingCentre_[n] = pendingCentre_[p];
-            if (n != p)
-            {
-                copyBlock
-                (
-                    pendingState_.cdata() + p*stride,
-                    pendingState_.data() + n*stride,
-                    stride
-                );
-            }
-            ++n;
-        }
-    }
-    pendingParticle_.resize(n);
-    pendingPartner_.resize(n);
-    pendingCentre_.resize(n);
-    pendingState_.resize(n*stride);
+    remapPending
+    (
+        newIndex, stride,
+        pendingPairParticle_, pendingPairPartner_, pendingPairState_
+    );
+    remapPending
+    (
+        newIndex, stride,
+        pendingWallParticle_, pendingWallCentre_, pendingWallState_
+    );
 
     particles_.resize(nOld);
     particles_.reorder(order);
@@ -257,16 +284,30 @@ void Foam::demEngine::addRecords(const label i, const contactRecords& records)
             << records.stride << " scalars per contact; the models declare "
             << slots_.stride() << exit(FatalError);
     }
+    const label stride = slots_.stride();
     forAll(records.partner, k)
     {
-        addPending
-        (
-            i,
-            records.partner[k],
-            records.faceCentre[k],
-            records.stateOf(k)
-        );
+        const scalar* b = records.stateOf(k);
+        if (contactRecords::isWall(records.partner[k]))
+        {
+            pendingWallParticle_.append(i);
+            pendingWallCentre_.append(records.faceCentre[k]);
+            for (label c = 0; c < stride; ++c)
+            {
+                pendingWallState_.append(b[c]);
+            }
+        }
+        else
+        {
+            pendingPairParticle_.append(i);
+            pendingPairPartner_.append(records.partner[k]);
+            for (label c = 0; c < stride; ++c)
+            {
+                pendingPairState_.append(b[c]);
+            }
+        }
     }
+    recordIndexValid_ = false;
 }
 
 
@@ -287,7 +328,7 @@ void Foam::demEngine::rebuild()
     // Pending states by particle
     labelList start;
     labelList sorted;
-    groupByParticle(pendingParticle_, nL, start, sorted);
+    groupByParticle(pendingPairParticle_, nL, start, sorted);
 
     // Pairs (of two ghosts: their owners' business)
     pairs_.clear();
@@ -303,7 +344,7 @@ void Foam::demEngine::rebuild()
         const demIdentity partner = P.identity[b];
         for (label q = start[a]; q < start[a + 1]; ++q)
         {
-            if (pendingPartner_[sorted[q]] == partner)
+            if (pendingPairPartner_[sorted[q]] == partner)
             {
                 return sorted[q];
             }
@@ -318,12 +359,17 @@ void Foam::demEngine::rebuild()
         label p = findPair(a, b);
         if (p >= 0)
         {
-            copyBlock(pendingState_.cdata() + p*stride, pairs_.stateOf(k), stride);
+            copyBlock
+            (
+                pendingPairState_.cdata() + p*stride,
+                pairs_.stateOf(k),
+                stride
+            );
         }
         else if (b < nL && (p = findPair(b, a)) >= 0)
         {
             scalar* s = pairs_.stateOf(k);
-            copyBlock(pendingState_.cdata() + p*stride, s, stride);
+            copyBlock(pendingPairState_.cdata() + p*stride, s, stride);
             slots_.flipSides(s);
         }
     }
@@ -334,6 +380,7 @@ void Foam::demEngine::rebuild()
     walls_.candidates(P, nL, skin_, wallContacts_);
     law_->setWallCoefficients(P, wallContacts_);
 
+    groupByParticle(pendingWallParticle_, nL, start, sorted);
     const scalar tol2 = sqr(1e-6*skin_);
     for (label k = 0; k < wallContacts_.size(); ++k)
     {
@@ -346,15 +393,11 @@ void Foam::demEngine::rebuild()
         for (label q = start[i]; q < start[i + 1]; ++q)
         {
             const label p = sorted[q];
-            if
-            (
-                contactRecords::isWall(pendingPartner_[p])
-             && magSqr(pendingCentre_[p] - centre) < tol2
-            )
+            if (magSqr(pendingWallCentre_[p] - centre) < tol2)
             {
                 copyBlock
                 (
-                    pendingState_.cdata() + p*stride,
+                    pendingWallState_.cdata() + p*stride,
                     wallContacts_.stateOf(k),
                     stride
                 );
@@ -363,10 +406,7 @@ void Foam::demEngine::rebuild()
         }
     }
 
-    pendingParticle_.clear();
-    pendingPartner_.clear();
-    pendingCentre_.clear();
-    pendingState_.clear();
+    clearPending();
 
     lastPairs_ = pairs_.size();
     lastWalls_ = wallContacts_.size();
@@ -599,29 +639,46 @@ void Foam::demEngine::indexRecords() const
     const label nL = nLocal();
     const label dur = durationSlot_;
 
-    // Entries: 2k (pair k from its first), 2k + 1 (from its second), -k-1
-    // (wall contact k)
+    // Entries: valid lists: 2k (pair k from its first particle), 2k + 1
+    // (from its second), -k-1 (wall contact k); otherwise 2p (pending pair
+    // state p), -p-1 (pending wall state p)
     DynamicList<label> owner;
     DynamicList<label> entry;
-    for (label k = 0; k < pairs_.size(); ++k)
+    if (listsValid_)
     {
-        if (pairs_.stateOf(k)[dur] > 0)
+        for (label k = 0; k < pairs_.size(); ++k)
         {
-            owner.append(pairs_.first[k]);
-            entry.append(2*k);
-            if (pairs_.second[k] < nL)
+            if (pairs_.stateOf(k)[dur] > 0)
             {
-                owner.append(pairs_.second[k]);
-                entry.append(2*k + 1);
+                owner.append(pairs_.first[k]);
+                entry.append(2*k);
+                if (pairs_.second[k] < nL)
+                {
+                    owner.append(pairs_.second[k]);
+                    entry.append(2*k + 1);
+                }
+            }
+        }
+        for (label k = 0; k < wallContacts_.size(); ++k)
+        {
+            if (wallContacts_.stateOf(k)[dur] > 0)
+            {
+                owner.append(wallContacts_.first[k]);
+                entry.append(-k - 1);
             }
         }
     }
-    for (label k = 0; k < wallContacts_.size(); ++k)
+    else
     {
-        if (wallContacts_.stateOf(k)[dur] > 0)
+        forAll(pendingPairParticle_, p)
         {
-            owner.append(wallContacts_.first[k]);
-            entry.append(-k - 1);
+            owner.append(pendingPairParticle_[p]);
+            entry.append(2*p);
+        }
+        forAll(pendingWallParticle_, p)
+        {
+            owner.append(pendingWallParticle_[p]);
+            entry.append(-p - 1);
         }
     }
 
@@ -638,35 +695,6 @@ void Foam::demEngine::indexRecords() const
 
 void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
 {
-    if (!listsValid_)
-    {
-        // Between a reorder and the next build: the pending states are the
-        // contacts
-        DynamicList<label> mine;
-        forAll(pendingParticle_, p)
-        {
-            if (pendingParticle_[p] == i)
-            {
-                mine.append(p);
-            }
-        }
-        const label stride = slots_.stride();
-        records.setSize(mine.size(), stride, slots_.vectorOffsets());
-        forAll(mine, k)
-        {
-            const label p = mine[k];
-            records.partner[k] = pendingPartner_[p];
-            records.faceCentre[k] = pendingCentre_[p];
-            copyBlock
-            (
-                pendingState_.cdata() + p*stride,
-                records.stateOf(k),
-                stride
-            );
-        }
-        return;
-    }
-
     if (!recordIndexValid_)
     {
         indexRecords();
@@ -680,7 +708,25 @@ void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
     {
         const label c = recordContact_[q];
         const label k = q - s;
-        if (c >= 0)
+        scalar* b = records.stateOf(k);
+        if (!listsValid_)
+        {
+            if (c >= 0)
+            {
+                const label p = c/2;
+                records.partner[k] = pendingPairPartner_[p];
+                records.faceCentre[k] = Zero;
+                copyBlock(pendingPairState_.cdata() + p*stride, b, stride);
+            }
+            else
+            {
+                const label p = -c - 1;
+                records.partner[k] = -1;
+                records.faceCentre[k] = pendingWallCentre_[p];
+                copyBlock(pendingWallState_.cdata() + p*stride, b, stride);
+            }
+        }
+        else if (c >= 0)
         {
             const label pk = c/2;
             const bool fromSecond = c % 2;
@@ -688,10 +734,10 @@ void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
                 fromSecond ? pairs_.first[pk] : pairs_.second[pk];
             records.partner[k] = particles_.identity[partner];
             records.faceCentre[k] = Zero;
-            copyBlock(pairs_.stateOf(pk), records.stateOf(k), stride);
+            copyBlock(pairs_.stateOf(pk), b, stride);
             if (fromSecond)
             {
-                slots_.flipSides(records.stateOf(k));
+                slots_.flipSides(b);
             }
         }
         else
@@ -699,7 +745,7 @@ void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
             const label wk = -c - 1;
             records.partner[k] = -1;
             records.faceCentre[k] = walls_.centre(wallContacts_.second[wk]);
-            copyBlock(wallContacts_.stateOf(wk), records.stateOf(k), stride);
+            copyBlock(wallContacts_.stateOf(wk), b, stride);
         }
     }
 }

@@ -114,15 +114,15 @@ void Foam::DEMCloud<CloudType>::syncParticles(TrackCloudType& cloud)
         {
             Q.position[n] = p.position();
             Q.velocity[n] = p.U();
-            Q.angularVelocity[n] = p.angularVelocity();
-            Q.force[n] = p.contactForce();
-            Q.torque[n] = p.contactTorque();
             Q.setSphere(n, 0.5*p.d(), p.rho());
             Q.identity[n] = p.identity();
-            if (p.records())
+            if (const demParcelState* st = p.state())
             {
-                engine.addRecords(n, *p.records());
-                p.recordsPtr().clear();
+                Q.angularVelocity[n] = st->angularVelocity;
+                Q.force[n] = st->contactForce;
+                Q.torque[n] = st->contactTorque;
+                engine.addRecords(n, st->contacts);
+                p.statePtr().clear();
             }
         }
         p.demIndex() = n;
@@ -248,9 +248,6 @@ void Foam::DEMCloud<CloudType>::motion
         }
         p.displacement() = P.position[n] - p.position();
         p.U() = P.velocity[n];
-        p.angularVelocity() = P.angularVelocity[n];
-        p.contactForce() = P.force[n];
-        p.contactTorque() = P.torque[n];
         ++n;
     }
 
@@ -289,12 +286,8 @@ void Foam::DEMCloud<CloudType>::parcelLeaves
 
     if (transfer)
     {
-        p.recordsPtr().reset(new contactRecords());
-        collision_->engine().recordsOf(k, p.recordsPtr()());
-        if (p.recordsPtr()().empty())
-        {
-            p.recordsPtr().clear();
-        }
+        p.statePtr().reset(new demParcelState());
+        demStateOf(k, p.statePtr()());
     }
     p.demIndex() = -1;
 }
@@ -355,6 +348,21 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
             p.T() += heatFraction_[k]*dTg[sourceCell_[k]];
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::demStateOf
+(
+    const label i,
+    demParcelState& state
+) const
+{
+    const demEngine& engine = collision_->engine();
+    state.angularVelocity = engine.particles().angularVelocity[i];
+    state.contactForce = engine.particles().force[i];
+    state.contactTorque = engine.particles().torque[i];
+    engine.recordsOf(i, state.contacts);
 }
 
 

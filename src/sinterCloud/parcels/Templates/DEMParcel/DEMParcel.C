@@ -88,13 +88,10 @@ template<class ParcelType>
 void Foam::DEMParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
-    angularVelocity_ = transform(T, angularVelocity_);
-    contactForce_ = transform(T, contactForce_);
-    contactTorque_ = transform(T, contactTorque_);
     displacement_ = transform(T, displacement_);
-    if (records_.valid())
+    if (state_.valid())
     {
-        records_->transform(T);
+        state_->transform(T);
     }
 }
 

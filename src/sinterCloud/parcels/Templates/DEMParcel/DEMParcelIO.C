@@ -21,19 +21,18 @@ Foam::DEMParcel<ParcelType>::DEMParcel
 )
 :
     ParcelType(mesh, is, readFields, newFormat),
-    angularVelocity_(Zero),
-    contactForce_(Zero),
-    contactTorque_(Zero),
     displacement_(Zero),
     demIndex_(-1)
 {
     if (readFields)
     {
-        contactRecords records;
-        is >> angularVelocity_ >> contactForce_ >> contactTorque_ >> records;
-        if (records.size())
+        // A flag, then the state (a parcel in transit carries it)
+        label hasState;
+        is >> hasState;
+        if (hasState)
         {
-            records_.reset(new contactRecords(std::move(records)));
+            state_.reset(new demParcelState());
+            is >> state_();
         }
     }
 
@@ -76,21 +75,21 @@ inline const contactSlots& slotsOf(const CloudType& c, long)
     return none;
 }
 
-//- The contacts of the engine's particle i (DEMCloud)
+//- The DEM state of the engine's particle i (DEMCloud)
 template<class CloudType>
-inline auto recordsOf
+inline auto stateOf
 (
     const CloudType& c,
     const label i,
-    contactRecords& r,
+    demParcelState& s,
     int
-) -> decltype(c.contactRecordsOf(i, r))
+) -> decltype(c.demStateOf(i, s))
 {
-    return c.contactRecordsOf(i, r);
+    return c.demStateOf(i, s);
 }
 
 template<class CloudType>
-inline void recordsOf(const CloudType& c, const label, contactRecords&, long)
+inline void stateOf(const CloudType& c, const label, demParcelState&, long)
 {
     slotsOf(c, 0L);
 }
@@ -223,9 +222,11 @@ void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
     label i = 0;
     for (DEMParcel<ParcelType>& p : c)
     {
-        p.angularVelocity_ = values[0][i];
-        p.contactForce_ = values[1][i];
-        p.contactTorque_ = values[2][i];
+        p.state_.reset(new demParcelState());
+        demParcelState& st = p.state_();
+        st.angularVelocity = values[0][i];
+        st.contactForce = values[1][i];
+        st.contactTorque = values[2][i];
 
         if (haveContacts && partner()[i].size())
         {
@@ -251,8 +252,7 @@ void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
                     << exit(FatalError);
             }
 
-            p.records_.reset(new contactRecords());
-            contactRecords& r = p.records_();
+            contactRecords& r = st.contacts;
             r.setSize(n, slots.stride(), vectorOffsets);
             r.state = 0;
             for (label k = 0; k < n; ++k)
@@ -342,22 +342,22 @@ void Foam::DEMParcel<ParcelType>::writeFields(const CloudType& c)
         }
     }
 
-    contactRecords engineRecords;
+    demParcelState engineState;
     label i = 0;
     for (const DEMParcel<ParcelType>& p : c)
     {
-        angularVelocity[i] = p.angularVelocity_;
-        contactForce[i] = p.contactForce_;
-        contactTorque[i] = p.contactTorque_;
-
         // Off the engine (arrived this step), or from it
-        const contactRecords* r = p.records_.get();
-        if (!r && p.demIndex_ >= 0)
+        const demParcelState* st = p.state_.get();
+        if (!st && p.demIndex_ >= 0)
         {
-            recordsOf(c, p.demIndex_, engineRecords, 0);
-            r = &engineRecords;
+            stateOf(c, p.demIndex_, engineState, 0);
+            st = &engineState;
         }
+        const contactRecords* r = st ? &st->contacts : nullptr;
         const label n = r ? r->size() : 0;
+        angularVelocity[i] = st ? st->angularVelocity : Zero;
+        contactForce[i] = st ? st->contactForce : Zero;
+        contactTorque[i] = st ? st->contactTorque : Zero;
 
         partner[i].setSize(2*n);
         faceCentre[i].setSize(n);
@@ -422,18 +422,11 @@ Foam::Ostream& Foam::operator<<
     const DEMParcel<ParcelType>& p
 )
 {
-    os  << static_cast<const ParcelType&>(p)
-        << token::SPACE << p.angularVelocity_
-        << token::SPACE << p.contactForce_
-        << token::SPACE << p.contactTorque_
-        << token::SPACE;
-    if (p.records_.valid())
+    os  << static_cast<const ParcelType&>(p) << token::SPACE
+        << label(p.state_.valid());
+    if (p.state_.valid())
     {
-        os << p.records_();
-    }
-    else
-    {
-        os << contactRecords();
+        os << token::SPACE << p.state_();
     }
 
     os.check(FUNCTION_NAME);

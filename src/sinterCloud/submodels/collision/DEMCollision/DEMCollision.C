@@ -237,6 +237,7 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
     const scalar dtDEM = dt/nSub;
 
     engine_.setTime(owner_.db().time().value() - dt);
+    const label builds0 = engine_.nBuilds();
     engine_.beginStep();
     engine_.advance(dtDEM, nSub);
 
@@ -251,5 +252,6 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
             << returnReduce(engine_.nBridgedContacts(), sumOp<label>())
             << " bridged";
     }
-    Info<< endl;
+    Info<< "; lists built " << engine_.nBuilds() - builds0 << " times"
+        << endl;
 }
