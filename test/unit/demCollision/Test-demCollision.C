@@ -502,6 +502,43 @@ void casePersistentState()
         << " list builds in 20 CFD steps" << nl;
     check("list builds in 20 settled CFD steps", a.nBuilds() - builds0, 0, 0);
 
+    // The candidate pairs are exactly the pairs within the skin (brute
+    // force over all pairs; the engine's skin is 0.1 of the largest
+    // diameter)
+    {
+        const demParticles& P = a.particles();
+        scalar rMax = 0;
+        forAll(P.radius, i)
+        {
+            rMax = max(rMax, P.radius[i]);
+        }
+        const scalar skin = 0.1*2*rMax;
+        label expected = 0;
+        forAll(P.position, i)
+        {
+            for (label j = i + 1; j < P.size(); ++j)
+            {
+                const scalar range = P.radius[i] + P.radius[j] + skin;
+                expected += magSqr(P.position[i] - P.position[j]) < range*range;
+            }
+        }
+        a.invalidateLists();
+        a.beginStep();
+        label unique = 0;
+        const contactList& C = a.pairs();
+        for (label k = 0; k < C.size(); ++k)
+        {
+            bool seen = false;
+            for (label q = 0; q < k && !seen; ++q)
+            {
+                seen = C.first[q] == C.first[k] && C.second[q] == C.second[k];
+            }
+            unique += !seen && C.first[k] < C.second[k];
+        }
+        check("candidate pairs against all pairs within the skin", unique, expected, 0);
+        check("candidate pairs listed once", C.size(), expected, 0);
+    }
+
     // A restart: same order, contacts as records
     const label n = a.particles().size();
     labelList same(identity(n));
