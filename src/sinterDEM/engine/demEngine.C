@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "demEngine.H"
+#include <utility>
 
 namespace
 {
@@ -95,6 +96,7 @@ Foam::demEngine::demEngine
     skin_(0),
     nLocal_(0),
     listsValid_(false),
+    rebuildRequested_(false),
     lastPairs_(0),
     lastWalls_(0),
     nBuilds_(0),
@@ -170,7 +172,7 @@ void Foam::demEngine::clearPending()
 }
 
 
-void Foam::demEngine::keepStates()
+void Foam::demEngine::keepStates(const labelUList& newIndex)
 {
     if (!listsValid_)
     {
@@ -179,6 +181,7 @@ void Foam::demEngine::keepStates()
 
     const label dur = durationSlot_;
     const label stride = slots_.stride();
+    const label nL = nLocal();
 
     // Room for exactly the touching contacts, then the copies
     label nPairs = 0;
@@ -203,11 +206,25 @@ void Foam::demEngine::keepStates()
         const scalar* s = pairs_.stateOf(k);
         if (s[dur] > 0)
         {
-            pendingPairParticle_.append(pairs_.first[k]);
-            pendingPairPartner_.append(particles_.identity[pairs_.second[k]]);
+            label a = pairs_.first[k];
+            label b = pairs_.second[k];
+            const bool flip =
+                newIndex.size() && b < nL
+             && newIndex[a] < 0 && newIndex[b] >= 0;
+            if (flip)
+            {
+                std::swap(a, b);
+            }
+            pendingPairParticle_.append(a);
+            pendingPairPartner_.append(particles_.identity[b]);
+            const label start = pendingPairState_.size();
             for (label c = 0; c < stride; ++c)
             {
                 pendingPairState_.append(s[c]);
+            }
+            if (flip)
+            {
+                slots_.flipSides(pendingPairState_.data() + start);
             }
         }
     }
@@ -229,16 +246,8 @@ void Foam::demEngine::keepStates()
 }
 
 
-void Foam::demEngine::invalidateLists()
-{
-    keepStates();
-}
-
-
 void Foam::demEngine::reorder(const labelUList& order)
 {
-    keepStates();
-
     const label nOld = nLocal();
     labelList newIndex(nOld, -1);
     forAll(order, k)
@@ -248,6 +257,9 @@ void Foam::demEngine::reorder(const labelUList& order)
             newIndex[order[k]] = k;
         }
     }
+
+    // A pair whose first particle goes is kept from its second's side
+    keepStates(newIndex);
 
     // Pending states of the particles that stay, by their new index
     const label stride = slots_.stride();
@@ -325,6 +337,19 @@ void Foam::demEngine::rebuild()
         halo_->select(P, nL, 2*rMax + skin_);
     }
 
+    if (!(rMax > 0))
+    {
+        // No particles anywhere: empty lists
+        clearPending();
+        pairs_.clear();
+        wallContacts_.clear();
+        builtAt_.clear();
+        listsValid_ = true;
+        recordIndexValid_ = false;
+        ++nBuilds_;
+        return;
+    }
+
     // Pending states by particle
     labelList start;
     labelList sorted;
@@ -381,7 +406,9 @@ void Foam::demEngine::rebuild()
     law_->setWallCoefficients(P, wallContacts_);
 
     groupByParticle(pendingWallParticle_, nL, start, sorted);
-    const scalar tol2 = sqr(1e-6*skin_);
+    // Face centres a hundredth of the skin apart are the same face: far
+    // above the rounding of an ascii write, far below the face spacing
+    const scalar tol2 = sqr(0.01*skin_);
     for (label k = 0; k < wallContacts_.size(); ++k)
     {
         const label i = wallContacts_.first[k];
@@ -544,7 +571,7 @@ void Foam::demEngine::beginStep()
     checkWallTemperature();
     recordIndexValid_ = false;
 
-    bool rebuildNow = listsExpired();
+    bool rebuildNow = rebuildRequested_ || listsExpired();
     if (halo_.valid())
     {
         reduce(rebuildNow, orOp<bool>());
@@ -558,6 +585,7 @@ void Foam::demEngine::beginStep()
     {
         halo_->update(particles_, nLocal_, true);
     }
+    rebuildRequested_ = false;
 
     vector* __restrict__ Jd = particles_.dragImpulse.data();
     for (label i = 0; i < nLocal_; ++i)
@@ -582,7 +610,12 @@ void Foam::demEngine::initialise()
 
 void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 {
-    if (nLocal_ < 0 || !listsValid_)
+    bool cold = nLocal_ < 0 || !listsValid_;
+    if (halo_.valid())
+    {
+        reduce(cold, orOp<bool>());
+    }
+    if (cold)
     {
         initialise();
     }

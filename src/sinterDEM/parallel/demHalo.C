@@ -46,9 +46,16 @@ void Foam::demHalo::select
         grown[proci].min() -= vector::uniform(range);
         grown[proci].max() += vector::uniform(range);
     }
+    // The same test on both sides of a pair (the lower rank's region
+    // grown), so that the relation is symmetric to the last bit
+    const label me = Pstream::myProcNo();
     forAll(regions, proci)
     {
-        if (proci != Pstream::myProcNo() && grown[proci].overlaps(region))
+        if
+        (
+            proci != me
+         && grown[min(proci, me)].overlaps(regions[max(proci, me)])
+        )
         {
             nbrs.append(proci);
         }

@@ -539,6 +539,67 @@ void casePersistentState()
         check("candidate pairs listed once", C.size(), expected, 0);
     }
 
+    // A particle leaves (another processor takes it): each of its partners
+    // that stays keeps the contact, from its own side
+    {
+        demEngine e(dict, 1);
+        e.setWalls(a.walls());
+        copyParticles(a, e, identity(a.particles().size()));
+        e.beginStep();
+        const contactList& C = e.pairs();
+        label k = 0;
+        while (k < C.size() && C.stateOf(k)[e.durationSlot()] <= 0)
+        {
+            ++k;
+        }
+        const label first = C.first[k];
+        const label second = C.second[k];
+        const demIdentity idFirst = e.particles().identity[first];
+        const vector spring
+        (
+            C.stateOf(k)[e.law().springSlot()],
+            C.stateOf(k)[e.law().springSlot() + 1],
+            C.stateOf(k)[e.law().springSlot() + 2]
+        );
+
+        // All but the first particle of that pair stay
+        labelList stay(e.particles().size() - 1);
+        label n = 0;
+        forAll(e.particles().position, i)
+        {
+            if (i != first)
+            {
+                stay[n++] = i;
+            }
+        }
+        e.reorder(stay);
+        const label partner = second - (second > first);
+        contactRecords kept;
+        e.recordsOf(partner, kept);
+        label found = -1;
+        forAll(kept.partner, r)
+        {
+            if (kept.partner[r] == idFirst)
+            {
+                found = r;
+            }
+        }
+        check("the partner keeps the contact of the particle that left", found >= 0, 1, 0);
+        if (found >= 0)
+        {
+            const scalar* b = kept.stateOf(found);
+            const label o = e.law().springSlot();
+            check
+            (
+                "its spring, seen from its side (minus the other's) [m]",
+                mag(vector(b[o], b[o + 1], b[o + 2]) + spring),
+                0,
+                0
+            );
+            check("the spring is not zero", mag(spring) > 0, 1, 0);
+        }
+    }
+
     // A restart: same order, contacts as records
     const label n = a.particles().size();
     labelList same(identity(n));

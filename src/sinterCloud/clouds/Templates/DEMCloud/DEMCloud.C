@@ -19,6 +19,19 @@ Foam::DEMCloud<CloudType>::DEMCloud
 {
     if (this->solution().active())
     {
+        if
+        (
+            this->solution().coupled()
+         && this->solution().semiImplicit("h")
+         && this->solution().relaxCoeff("h") != 1
+        )
+        {
+            FatalIOErrorInFunction(this->particleProperties())
+                << "h semiImplicit " << this->solution().relaxCoeff("h")
+                << " in " << this->particleProperties().name()
+                << ": the implicit heat exchange conserves enthalpy only"
+                   " with the coefficient 1" << exit(FatalIOError);
+        }
         if (this->radiation())
         {
             FatalIOErrorInFunction(this->particleProperties())
@@ -225,7 +238,10 @@ void Foam::DEMCloud<CloudType>::motion
             this->hsCoeff()[celli] += np*mCp*fraction;
         }
 
+        // The position after tracking; the velocity too (a patch that is
+        // not a DEM wall, e.g. a rebound outlet, may have changed it)
         P.position[n] = p.position();
+        P.velocity[n] = p.U();
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();
@@ -369,7 +385,8 @@ void Foam::DEMCloud<CloudType>::demStateOf
 template<class CloudType>
 void Foam::DEMCloud<CloudType>::writeFields() const
 {
-    if (this->size() && collision_.valid())
+    // On every processor, parcels or not (collated writes are collective)
+    if (collision_.valid())
     {
         parcelType::writeFields(*this);
     }

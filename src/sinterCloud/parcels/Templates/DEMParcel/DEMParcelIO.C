@@ -26,9 +26,10 @@ Foam::DEMParcel<ParcelType>::DEMParcel
 {
     if (readFields)
     {
-        // A flag, then the state (a parcel in transit carries it)
+        // The rest of the step's displacement, a flag, then the state (a
+        // parcel in transit carries them)
         label hasState;
-        is >> hasState;
+        is >> displacement_ >> hasState;
         if (hasState)
         {
             state_.reset(new demParcelState());
@@ -423,7 +424,7 @@ Foam::Ostream& Foam::operator<<
 )
 {
     os  << static_cast<const ParcelType&>(p) << token::SPACE
-        << label(p.state_.valid());
+        << p.displacement_ << token::SPACE << label(p.state_.valid());
     if (p.state_.valid())
     {
         os << token::SPACE << p.state_();
