@@ -119,11 +119,7 @@ Foam::demParticles& Foam::demEngine::resetParticles()
     particles_.clear();
     nLocal_ = -1;
     clearPending();
-    pairs_.clear();
-    wallContacts_.clear();
-    builtAt_.clear();
-    listsValid_ = false;
-    recordIndexValid_ = false;
+    clearLists();
     return particles_;
 }
 
@@ -157,6 +153,16 @@ Foam::scalar Foam::demEngine::maxRadius() const
         reduce(rMax, maxOp<scalar>());
     }
     return rMax;
+}
+
+
+void Foam::demEngine::clearLists()
+{
+    pairs_.clear();
+    wallContacts_.clear();
+    builtAt_.clear();
+    listsValid_ = false;
+    recordIndexValid_ = false;
 }
 
 
@@ -277,12 +283,7 @@ void Foam::demEngine::reorder(const labelUList& order)
     particles_.resize(nOld);
     particles_.reorder(order);
     nLocal_ = order.size();
-
-    pairs_.clear();
-    wallContacts_.clear();
-    builtAt_.clear();
-    listsValid_ = false;
-    recordIndexValid_ = false;
+    clearLists();
 }
 
 
@@ -341,11 +342,8 @@ void Foam::demEngine::rebuild()
     {
         // No particles anywhere: empty lists
         clearPending();
-        pairs_.clear();
-        wallContacts_.clear();
-        builtAt_.clear();
+        clearLists();
         listsValid_ = true;
-        recordIndexValid_ = false;
         ++nBuilds_;
         return;
     }

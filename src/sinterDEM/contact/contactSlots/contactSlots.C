@@ -55,6 +55,7 @@ Foam::label Foam::contactSlots::addVector
     const bool odd
 )
 {
+    vectorOffsets_.append(stride_);
     return addSlot(slots_, stride_, name, owner, true, odd);
 }
 
@@ -98,18 +99,4 @@ void Foam::contactSlots::transform(const tensor& T, scalar* block) const
             v[2] = r.z();
         }
     }
-}
-
-
-Foam::labelList Foam::contactSlots::vectorOffsets() const
-{
-    DynamicList<label> offsets;
-    for (const slot& s : slots_)
-    {
-        if (s.isVector)
-        {
-            offsets.append(s.offset);
-        }
-    }
-    return labelList(std::move(offsets));
 }

@@ -15,7 +15,8 @@ Foam::DEMCloud<CloudType>::DEMCloud
     bool readFields
 )
 :
-    CloudType(cloudName, rho, U, g, thermo, false)
+    CloudType(cloudName, rho, U, g, thermo, false),
+    massChecked_(false)
 {
     if (this->solution().active())
     {
@@ -218,10 +219,17 @@ void Foam::DEMCloud<CloudType>::motion
             cloud.forces().calcCoupled(p, td, dt, m, Re, td.muc());
         const forceSuSp Fncp =
             cloud.forces().calcNonCoupled(p, td, dt, m, Re, td.muc());
-        if (Fncp.Sp() != 0 || cloud.forces().massEff(p, td, m) != m)
+        // A force that adds mass does so for every parcel: the first
+        // parcel tells
+        if
+        (
+            Fncp.Sp() != 0
+         || (!massChecked_ && cloud.forces().massEff(p, td, m) != m)
+        )
         {
             unsupportedForce(cloud, p, td, dt);
         }
+        massChecked_ = true;
 
         scalar dhsTrans, hAdt;
         const scalar T0 = p.T();
@@ -315,24 +323,16 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
     volScalarField& hs
 ) const
 {
-    if (!this->solution().coupled())
+    // Explicit (or no heat transfer, hsCoeff zero): ThermoCloud's source
+    if (!heatImplicit())
     {
-        return tmp<fvScalarMatrix>::New(hs, dimEnergy/dimTime);
+        return CloudType::Sh(hs);
     }
 
     const volScalarField::Internal Vdt
     (
         this->mesh().V()*this->db().time().deltaT()
     );
-
-    if (!heatImplicit())
-    {
-        tmp<fvScalarMatrix> tfvm(new fvScalarMatrix(hs, dimEnergy/dimTime));
-        tfvm.ref().source() =
-            -this->hsTrans().field()/this->db().time().deltaTValue();
-        return tfvm;
-    }
-
     const volScalarField Cp(this->thermo().thermo().Cp());
     const volScalarField::Internal K(this->hsCoeff()/(Cp()*Vdt));
 

@@ -59,6 +59,29 @@ bool present(const CloudType& c, const word& name)
 }
 
 
+//- Read the lagrangian field-field name into fields[i] if its file is there
+template<class FieldType, class CloudType>
+void readIfPresent
+(
+    CloudType& c,
+    const word& name,
+    const bool valid,
+    PtrList<FieldType>& fields,
+    const label i
+)
+{
+    if (present<FieldType>(c, name))
+    {
+        fields.set
+        (
+            i,
+            new FieldType(c.fieldIOobject(name, IOobject::MUST_READ), valid)
+        );
+        c.checkFieldFieldIOobject(c, fields[i]);
+    }
+}
+
+
 //- The cloud's contact slots (DEMCloud); other layers cannot say
 template<class CloudType>
 inline auto slotsOf(const CloudType& c, int) -> decltype(c.contactSlotLayout())
@@ -179,32 +202,11 @@ void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
             const word name(contactSlots::fieldName(s));
             if (s.isVector)
             {
-                if (present<vectorFieldCompactIOField>(c, name))
-                {
-                    vectorSlots.set
-                    (
-                        si,
-                        new vectorFieldCompactIOField
-                        (
-                            c.fieldIOobject(name, IOobject::MUST_READ),
-                            valid
-                        )
-                    );
-                    c.checkFieldFieldIOobject(c, vectorSlots[si]);
-                }
+                readIfPresent(c, name, valid, vectorSlots, si);
             }
-            else if (present<scalarFieldCompactIOField>(c, name))
+            else
             {
-                scalarSlots.set
-                (
-                    si,
-                    new scalarFieldCompactIOField
-                    (
-                        c.fieldIOobject(name, IOobject::MUST_READ),
-                        valid
-                    )
-                );
-                c.checkFieldFieldIOobject(c, scalarSlots[si]);
+                readIfPresent(c, name, valid, scalarSlots, si);
             }
             if
             (
@@ -219,7 +221,7 @@ void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
         }
     }
 
-    const labelList vectorOffsets(slots.vectorOffsets());
+    const labelUList& vectorOffsets = slots.vectorOffsets();
     label i = 0;
     for (DEMParcel<ParcelType>& p : c)
     {
