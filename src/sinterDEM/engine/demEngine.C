@@ -77,18 +77,43 @@ void remapPending
     state.resize(n*stride);
 }
 
+//- Room for n more pending states, growing by a quarter at least (not
+//  doubling: restart records are many)
+template<class Partner>
+void growPending
+(
+    Foam::DynamicList<Foam::label>& particle,
+    Foam::DynamicList<Partner>& partner,
+    Foam::DynamicList<Foam::scalar>& state,
+    const Foam::label n,
+    const Foam::label stride
+)
+{
+    using namespace Foam;
+    const label need = particle.size() + n;
+    if (need > particle.capacity())
+    {
+        const label cap = max(need, label(1.25*particle.capacity()) + 16);
+        particle.setCapacity(cap);
+        partner.setCapacity(cap);
+        state.setCapacity(cap*stride);
+    }
+}
+
 } // End anonymous namespace
 
 
 Foam::demEngine::demEngine
 (
     const dictionary& dict,
+    const dictionary& materials,
     const scalar coarseGrainFactor
 )
 :
+    materials_(materials),
     slots_(),
     durationSlot_(slots_.addScalar("duration", "demEngine", false)),
-    law_(contactLaw::New(dict, coarseGrainFactor, slots_)),
+    law_(contactLaw::New(dict, materials_, coarseGrainFactor, slots_)),
     cohesion_(cohesionModel::New(dict, law_(), coarseGrainFactor, slots_)),
     kernel_(contactKernel::New(law_(), cohesion_(), durationSlot_)),
     time_(0),
@@ -100,6 +125,8 @@ Foam::demEngine::demEngine
     lastPairs_(0),
     lastWalls_(0),
     nBuilds_(0),
+    spatialSort_(false),
+    movedValid_(false),
     recordIndexValid_(false)
 {
     if (!(skinFraction_ > 0))
@@ -110,7 +137,7 @@ Foam::demEngine::demEngine
             << exit(FatalIOError);
     }
     pairs_.setLayout(law_->nCoeffs(), slots_.stride(), false);
-    wallContacts_.setLayout(law_->nCoeffs(), slots_.stride(), true);
+    wallContacts_.setLayout(law_->nWallCoeffs(), slots_.stride(), true);
 }
 
 
@@ -126,6 +153,16 @@ Foam::demParticles& Foam::demEngine::resetParticles()
 
 void Foam::demEngine::setWalls(const demWalls& walls)
 {
+    for (const label m : walls.materials())
+    {
+        if (m < 0 || m >= materials_.nWalls())
+        {
+            FatalErrorInFunction
+                << "Wall material " << m << " of a wall face: there are "
+                << materials_.nWalls() << " wall materials "
+                << materials_.wallNames() << exit(FatalError);
+        }
+    }
     keepStates();
     walls_ = walls;
     listsValid_ = false;
@@ -298,6 +335,30 @@ void Foam::demEngine::addRecords(const label i, const contactRecords& records)
             << slots_.stride() << exit(FatalError);
     }
     const label stride = slots_.stride();
+
+    // Without other processors every partner is a local particle, which
+    // brings its own record of the pair: the side of the smaller identity
+    // is enough (the list build takes a state from either side)
+    const bool oneSide = !halo_.valid();
+    const demIdentity self = particles_.identity[i];
+
+    label nPairs = 0;
+    label nWalls = 0;
+    forAll(records.partner, k)
+    {
+        const demIdentity partner = records.partner[k];
+        if (contactRecords::isWall(partner))
+        {
+            ++nWalls;
+        }
+        else if (!oneSide || self < partner)
+        {
+            ++nPairs;
+        }
+    }
+    growPending(pendingPairParticle_, pendingPairPartner_, pendingPairState_, nPairs, stride);
+    growPending(pendingWallParticle_, pendingWallCentre_, pendingWallState_, nWalls, stride);
+
     forAll(records.partner, k)
     {
         const scalar* b = records.stateOf(k);
@@ -310,7 +371,7 @@ void Foam::demEngine::addRecords(const label i, const contactRecords& records)
                 pendingWallState_.append(b[c]);
             }
         }
-        else
+        else if (!oneSide || self < records.partner[k])
         {
             pendingPairParticle_.append(i);
             pendingPairPartner_.append(records.partner[k]);
@@ -324,6 +385,116 @@ void Foam::demEngine::addRecords(const label i, const contactRecords& records)
 }
 
 
+void Foam::demEngine::sortLocals(const scalar range)
+{
+    demParticles& P = particles_;
+    const label nL = nLocal();
+    if (nL < 2)
+    {
+        return;
+    }
+
+    // Bins over the locals' box, numbered x fastest; no more bins than a
+    // few per particle (sparse particles)
+    const boundBox box(SubList<vector>(P.position, nL), false);
+    const vector span = box.span();
+    scalar width = range;
+    label nx, ny, nz;
+    while (true)
+    {
+        nx = label(span.x()/width) + 1;
+        ny = label(span.y()/width) + 1;
+        nz = label(span.z()/width) + 1;
+        if (scalar(nx)*ny*nz <= 8*nL + 27)
+        {
+            break;
+        }
+        width *= 1.26;
+    }
+    const label nBins = nx*ny*nz;
+
+    labelList bin(nL);
+    labelList start(nBins + 1, Zero);
+    for (label i = 0; i < nL; ++i)
+    {
+        const vector rel = (P.position[i] - box.min())/width;
+        const label ix = min(label(rel.x()), nx - 1);
+        const label iy = min(label(rel.y()), ny - 1);
+        const label iz = min(label(rel.z()), nz - 1);
+        bin[i] = ix + nx*(iy + ny*iz);
+        ++start[bin[i] + 1];
+    }
+    for (label b = 0; b < nBins; ++b)
+    {
+        start[b + 1] += start[b];
+    }
+    labelList order(nL);
+    {
+        labelList fill(SubList<label>(start, nBins));
+        for (label i = 0; i < nL; ++i)
+        {
+            order[fill[bin[i]]++] = i;
+        }
+    }
+
+    // Within a bin by identity (a few particles: insertion sort)
+    const demIdentity* id = P.identity.cdata();
+    for (label b = 0; b < nBins; ++b)
+    {
+        for (label p = start[b] + 1; p < start[b + 1]; ++p)
+        {
+            const label i = order[p];
+            label q = p;
+            while (q > start[b] && id[order[q - 1]] > id[i])
+            {
+                order[q] = order[q - 1];
+                --q;
+            }
+            order[q] = i;
+        }
+    }
+
+    labelList newIndex(nL);
+    bool same = true;
+    forAll(order, k)
+    {
+        newIndex[order[k]] = k;
+        same = same && order[k] == k;
+    }
+    if (same)
+    {
+        return;
+    }
+
+    const label stride = slots_.stride();
+    remapPending
+    (
+        newIndex, stride,
+        pendingPairParticle_, pendingPairPartner_, pendingPairState_
+    );
+    remapPending
+    (
+        newIndex, stride,
+        pendingWallParticle_, pendingWallCentre_, pendingWallState_
+    );
+    P.resize(nL);
+    P.reorder(order);
+
+    if (movedValid_)
+    {
+        forAll(moved_, k)
+        {
+            moved_[k] = newIndex[moved_[k]];
+        }
+    }
+    else
+    {
+        moved_.transfer(newIndex);
+        movedValid_ = true;
+    }
+}
+
+
 void Foam::demEngine::rebuild()
 {
     demParticles& P = particles_;
@@ -332,6 +503,11 @@ void Foam::demEngine::rebuild()
 
     const scalar rMax = maxRadius();
     skin_ = skinFraction_*2*rMax;
+
+    if (spatialSort_ && rMax > 0)
+    {
+        sortLocals(2*rMax + skin_);
+    }
 
     if (halo_.valid())
     {
@@ -354,9 +530,15 @@ void Foam::demEngine::rebuild()
     groupByParticle(pendingPairParticle_, nL, start, sorted);
 
     // Pairs (of two ghosts: their owners' business)
-    pairs_.clear();
-    pairs_.reserve(label(1.05*lastPairs_) + 64);
+    // Room for the pairs: as many as last time and a little more, or, the
+    // first time, exactly as many (counted)
     bins_.build(P.position, 2*rMax + skin_);
+    pairs_.clearWithRoom
+    (
+        lastPairs_ > 0
+      ? label(1.05*lastPairs_) + 64
+      : bins_.countPairs(P, nL, skin_)
+    );
     bins_.pairs(P, nL, skin_, pairs_);
     law_->setPairCoefficients(P, pairs_);
 
@@ -398,10 +580,9 @@ void Foam::demEngine::rebuild()
     }
 
     // Wall contacts of local particles, states by face centre
-    wallContacts_.clear();
-    wallContacts_.reserve(label(1.05*lastWalls_) + 64);
+    wallContacts_.clearWithRoom(label(1.05*lastWalls_) + 64);
     walls_.candidates(P, nL, skin_, wallContacts_);
-    law_->setWallCoefficients(P, wallContacts_);
+    law_->setWallCoefficients(P, walls_, wallContacts_);
 
     groupByParticle(pendingWallParticle_, nL, start, sorted);
     // Face centres a hundredth of the skin apart are the same face: far
@@ -566,6 +747,7 @@ void Foam::demEngine::beginStep()
     {
         nLocal_ = particles_.size();
     }
+    movedValid_ = false;
     checkWallTemperature();
     recordIndexValid_ = false;
 

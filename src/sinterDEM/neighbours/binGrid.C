@@ -61,12 +61,13 @@ void Foam::binGrid::build(const UList<vector>& positions, const scalar width)
 }
 
 
-void Foam::binGrid::pairs
+template<class PairOp>
+void Foam::binGrid::forEachPair
 (
     const demParticles& P,
     const label nLocal,
     const scalar skin,
-    contactList& result
+    const PairOp& op
 ) const
 {
     // Forward half of the 26 neighbours
@@ -91,7 +92,7 @@ void Foam::binGrid::pairs
          && magSqr(x[a] - x[b]) < range*range
         )
         {
-            result.append(min(a, b), max(a, b));
+            op(min(a, b), max(a, b));
         }
     };
 
@@ -138,4 +139,53 @@ void Foam::binGrid::pairs
             }
         }
     }
+}
+
+
+namespace
+{
+
+struct appendPair
+{
+    Foam::contactList& list;
+    void operator()(const Foam::label a, const Foam::label b) const
+    {
+        list.append(a, b);
+    }
+};
+
+struct countPair
+{
+    Foam::label& n;
+    void operator()(const Foam::label, const Foam::label) const
+    {
+        ++n;
+    }
+};
+
+} // End anonymous namespace
+
+
+void Foam::binGrid::pairs
+(
+    const demParticles& P,
+    const label nLocal,
+    const scalar skin,
+    contactList& result
+) const
+{
+    forEachPair(P, nLocal, skin, appendPair{result});
+}
+
+
+Foam::label Foam::binGrid::countPairs
+(
+    const demParticles& P,
+    const label nLocal,
+    const scalar skin
+) const
+{
+    label n = 0;
+    forEachPair(P, nLocal, skin, countPair{n});
+    return n;
 }

@@ -3,18 +3,30 @@
 
 #include "demWalls.H"
 
-Foam::demWalls::demWalls(const pointField& points, const faceList& faces)
+Foam::demWalls::demWalls
+(
+    const pointField& points,
+    const faceList& faces,
+    const labelUList& material
+)
 :
     points_(points),
     faces_(faces),
     normals_(faces.size()),
     boxes_(faces.size()),
+    material_(material.empty() ? labelList(faces.size(), Zero) : labelList(material)),
     binnedRange_(-1),
     binWidth_(0),
     nx_(0),
     ny_(0),
     nz_(0)
 {
+    if (material_.size() != faces_.size())
+    {
+        FatalErrorInFunction
+            << material_.size() << " wall materials for " << faces_.size()
+            << " faces" << exit(FatalError);
+    }
     forAll(faces_, f)
     {
         normals_[f] = faces_[f].unitNormal(points_);

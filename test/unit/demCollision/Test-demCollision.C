@@ -27,6 +27,13 @@ Description
         bed's weight within 0.5 % (frictionless walls, particle friction
         0.5, e = 0.5).
 
+    -case persistentState  lists persist across steps; a copy with its
+        contact records continues bit-identically, a reordered one to
+        round-off.
+    -case spatialSort  the engine sorting its particles at each list
+        build: the particles are found through newIndex; a copy in reverse
+        order is bit-identical; sorted equals unsorted to 1e-10 r.
+
     -case badInput -bad unknownLaw|poissonsRatio|restitution|negativeModulus
         one bad entry must stop construction with a FatalIOError naming
         the keyword (CTest matches the message).
@@ -67,10 +74,6 @@ dictionary settings
 {
     OStringStream os;
     os  << "contactLaw " << law << ";"
-        << "particle { youngsModulus " << Yp << "; realYoungsModulus 60e9;"
-        << " poissonsRatio " << nup << "; }"
-        << "wall { youngsModulus " << Yw << "; realYoungsModulus 69e9;"
-        << " poissonsRatio " << nuw << "; }"
         << "particleParticle { restitution " << e << "; friction " << mu
         << "; rollingFriction " << muR << "; }"
         << "particleWall { restitution " << e << "; friction "
@@ -78,6 +81,22 @@ dictionary settings
         << "; rollingFriction " << muR << "; }"
         << "linearSpringDashpotCoeffs { kn 7000; kt 2250; gammaN 0.00131;"
         << " gammaT 0.0137; }";
+    IStringStream is(os.str());
+    return dictionary(is);
+}
+
+
+//- The materials (constant/materialProperties): particles and walls of
+//  softened moduli Yp, Yw (demYoungsModulus) and real ones 60, 69 GPa
+dictionary materials()
+{
+    OStringStream os;
+    os  << "glass { demYoungsModulus " << Yp << "; youngsModulus 60e9;"
+        << " poissonsRatio " << nup << "; }"
+        << "steel { demYoungsModulus " << Yw << "; youngsModulus 69e9;"
+        << " poissonsRatio " << nuw << "; }"
+        << "particle glass;"
+        << "walls { \".*\" steel; }";
     IStringStream is(os.str());
     return dictionary(is);
 }
@@ -232,14 +251,14 @@ void caseHeadOn()
     const scalar dt = tc/237;
 
     {
-        demEngine dem(settings("HertzMindlin", 1, 0.5), 1);
+        demEngine dem(settings("HertzMindlin", 1, 0.5), materials(), 1);
         const collisionResult res = headOn(dem, v, dt);
         check("HertzMindlin e=1 restitution", res.restitution, 1, 0.02);
         check("HertzMindlin e=1 contact time vs eq 5.12", res.contactTime, tc, 0.02);
     }
     for (const scalar e : {0.9, 0.5})
     {
-        demEngine dem(settings("HertzMindlin", e, 0.5), 1);
+        demEngine dem(settings("HertzMindlin", e, 0.5), materials(), 1);
         const collisionResult res = headOn(dem, v, dt);
         check("HertzMindlin e=" + name(e) + " restitution", res.restitution, e, 0.02);
         Info<< "     contact time / eq 5.12 (elastic): " << res.contactTime/tc << nl;
@@ -247,7 +266,7 @@ void caseHeadOn()
     {
         scalar e, tcLin;
         linearAnalytic(0.5*m, e, tcLin);
-        demEngine dem(settings("linearSpringDashpot", 1, 0.5), 1);
+        demEngine dem(settings("linearSpringDashpot", 1, 0.5), materials(), 1);
         const collisionResult res = headOn(dem, v, tcLin/237);
         check("linear restitution", res.restitution, e, 0.02);
         check("linear contact time", res.contactTime, tcLin, 0.02);
@@ -267,21 +286,21 @@ void caseWall()
     const scalar dt = tc/237;
 
     {
-        demEngine dem(settings("HertzMindlin", 1, 0.5), 1);
+        demEngine dem(settings("HertzMindlin", 1, 0.5), materials(), 1);
         const collisionResult res = onWall(dem, vector(0, 0, -v), dt);
         check("wall HertzMindlin e=1 restitution", res.restitution, 1, 0.02);
         check("wall HertzMindlin e=1 contact time vs eq 5.12", res.contactTime, tc, 0.02);
     }
     for (const scalar e : {0.9, 0.5})
     {
-        demEngine dem(settings("HertzMindlin", e, 0.5), 1);
+        demEngine dem(settings("HertzMindlin", e, 0.5), materials(), 1);
         const collisionResult res = onWall(dem, vector(0, 0, -v), dt);
         check("wall HertzMindlin e=" + name(e) + " restitution", res.restitution, e, 0.02);
     }
     {
         scalar e, tcLin;
         linearAnalytic(m, e, tcLin);
-        demEngine dem(settings("linearSpringDashpot", 1, 0.5), 1);
+        demEngine dem(settings("linearSpringDashpot", 1, 0.5), materials(), 1);
         const collisionResult res = onWall(dem, vector(0, 0, -v), tcLin/237);
         check("wall linear restitution", res.restitution, e, 0.02);
         check("wall linear contact time", res.contactTime, tcLin, 0.02);
@@ -300,7 +319,7 @@ void caseOblique()
 
     for (const scalar vt : {2.0, 4.0})
     {
-        demEngine dem(settings("HertzMindlin", e, mu), 1);
+        demEngine dem(settings("HertzMindlin", e, mu), materials(), 1);
         const collisionResult res = onWall(dem, vector(vt, 0, -vn), dt);
         check
         (
@@ -380,7 +399,7 @@ scalar fillBox
 void caseSettledBed()
 {
     // Frictionless walls, so that the side walls cannot carry weight
-    demEngine dem(settings("HertzMindlin", 0.5, 0.5, 0, 0), 1);
+    demEngine dem(settings("HertzMindlin", 0.5, 0.5, 0, 0), materials(), 1);
     scalar weight;
     const scalar dt = fillBox(dem, 8, 6, weight);
     const demParticles& P = dem.particles();
@@ -477,7 +496,7 @@ scalar largestDifference(const demEngine& a, const demEngine& b)
 void casePersistentState()
 {
     const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
-    demEngine a(dict, 1);
+    demEngine a(dict, materials(), 1);
     scalar weight;
     const scalar dt = fillBox(a, 6, 3, weight);
     a.initialise();
@@ -542,7 +561,7 @@ void casePersistentState()
     // A particle leaves (another processor takes it): each of its partners
     // that stays keeps the contact, from its own side
     {
-        demEngine e(dict, 1);
+        demEngine e(dict, materials(), 1);
         e.setWalls(a.walls());
         copyParticles(a, e, identity(a.particles().size()));
         e.beginStep();
@@ -608,8 +627,8 @@ void casePersistentState()
     {
         reversed[k] = n - 1 - k;
     }
-    demEngine b(dict, 1);
-    demEngine c(dict, 1);
+    demEngine b(dict, materials(), 1);
+    demEngine c(dict, materials(), 1);
     b.setWalls(a.walls());
     c.setWalls(a.walls());
     copyParticles(a, b, same);
@@ -649,17 +668,99 @@ void casePersistentState()
 }
 
 
+//- The engine sorting its particles by position at each list build (as
+//  the cloud has it): the owner follows each particle through newIndex;
+//  the result does not depend on the order the particles came in (a copy
+//  in reverse order is bit-identical: a restart sorts as the continuous
+//  run does), and it equals the unsorted engine's to round-off (1e-10 r
+//  after 2000 steps)
+void caseSpatialSort()
+{
+    const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
+    demEngine a(dict, materials(), 1);
+    scalar weight;
+    const scalar dt = fillBox(a, 6, 3, weight);
+    a.initialise();
+    for (label step = 0; step < 20000; ++step)
+    {
+        a.step(dt);
+    }
+
+    const label n = a.particles().size();
+    labelList reversed(n);
+    forAll(reversed, k)
+    {
+        reversed[k] = n - 1 - k;
+    }
+    demEngine b(dict, materials(), 1);
+    demEngine c(dict, materials(), 1);
+    for (demEngine* e : {&b, &c})
+    {
+        e->setWalls(a.walls());
+        e->setSpatialSort(true);
+    }
+    copyParticles(a, b, identity(n));
+    copyParticles(a, c, reversed);
+
+    const List<demIdentity> before(b.particles().identity);
+    a.invalidateLists();
+    a.beginStep();
+    b.beginStep();
+    c.beginStep();
+
+    check("the sorting engine moved its particles", b.moved(), 1, 0);
+    label lost = 0;
+    forAll(before, k)
+    {
+        lost += b.particles().identity[b.newIndex()[k]] != before[k];
+    }
+    check("particles found through newIndex", lost, 0, 0);
+    label sameOrder = 0;
+    for (label k = 0; k < n; ++k)
+    {
+        sameOrder +=
+            b.particles().identity[k] == c.particles().identity[k];
+    }
+    check("both copies in the same order", sameOrder, n, 0);
+    check("pair contacts carried", b.nPairContacts(), a.nPairContacts(), 0);
+    check("wall contacts carried", b.nWallContacts(), a.nWallContacts(), 0);
+
+    for (demEngine* e : {&a, &b, &c})
+    {
+        demParticles& P = e->particles();
+        forAll(P.externalForce, i)
+        {
+            P.externalForce[i].x() += 0.5*weight/n;
+        }
+        for (label step = 0; step < 2000; ++step)
+        {
+            e->step(dt);
+        }
+    }
+    check
+    (
+        "copy in reverse order: largest position difference [m]",
+        largestDifference(b, c), 0, 0
+    );
+    const scalar d = largestDifference(a, b);
+    Info<< "     sorted against unsorted: largest position difference " << d
+        << " m after 2000 steps" << nl;
+    check("sorted within 1e-10 r of unsorted", d < 1e-10*r, 1, 0);
+}
+
+
 //- Construct the engine from settings with one bad entry: must be fatal
 void caseBadInput(const word& what)
 {
     dictionary dict(settings("HertzMindlin", 0.9, 0.5));
+    dictionary mats(materials());
     if (what == "unknownLaw")
     {
         dict.set("contactLaw", word("Hooke"));
     }
     else if (what == "poissonsRatio")
     {
-        dict.subDict("particle").set("poissonsRatio", 0.6);
+        mats.subDict("glass").set("poissonsRatio", 0.6);
     }
     else if (what == "restitution")
     {
@@ -667,13 +768,13 @@ void caseBadInput(const word& what)
     }
     else if (what == "negativeModulus")
     {
-        dict.subDict("wall").set("youngsModulus", -5e6);
+        mats.subDict("steel").set("youngsModulus", -5e6);
     }
     else
     {
         FatalErrorInFunction << "Unknown -bad " << what << exit(FatalError);
     }
-    demEngine dem(dict, 1);
+    demEngine dem(dict, mats, 1);
     FatalErrorInFunction
         << "bad input " << what << " was accepted" << exit(FatalError);
 }
@@ -689,7 +790,7 @@ int main(int argc, char *argv[])
     argList::addOption
     (
         "case", "name",
-        "headOn|wall|oblique|settledBed|persistentState|badInput"
+        "headOn|wall|oblique|settledBed|persistentState|spatialSort|badInput"
     );
     argList::addOption
     (
@@ -706,12 +807,14 @@ int main(int argc, char *argv[])
     else if (which == "oblique") caseOblique();
     else if (which == "settledBed") caseSettledBed();
     else if (which == "persistentState") casePersistentState();
+    else if (which == "spatialSort") caseSpatialSort();
     else if (which == "badInput") caseBadInput(args.get<word>("bad"));
     else
     {
         FatalErrorInFunction
             << "Unknown -case " << which
             << ". Valid: headOn wall oblique settledBed persistentState"
+            << " spatialSort"
             << exit(FatalError);
     }
 

@@ -63,8 +63,6 @@ dictionary engineDict
         IStringStream
         (
             "contactLaw HertzMindlin;"
-            "particle { youngsModulus 1e6; realYoungsModulus 359e9; poissonsRatio 0.12; }"
-            "wall { youngsModulus 1e6; realYoungsModulus 359e9; poissonsRatio 0.12; }"
             "particleParticle { restitution 0.9; friction 0.5; }"
             "particleWall { restitution 0.9; friction 0.5; }"
             "cohesionModel " + cohesion + ";"
@@ -72,14 +70,30 @@ dictionary engineDict
             "{"
             "    C " + C + "; activationTime " + Foam::name(tAct) + ";"
             "    wallTemperature " + wallTemperature + ";"
-            "    material"
-            "    {"
-            "        density 5240; youngsModulus 359e9; poissonsRatio 0.12;"
-            "        surfaceTension 1; latticeConstant 1.38e-9;"
-            "        surfaceDiffusion ((1173.15 2.8e-13 1.74e5) (1e30 1.6e5 5.79e5));"
-            "        tensileStrength polynomial ((415377459.1 0) (-173.6283211 2));"
-            "    }"
             "}"
+        )()
+    );
+}
+
+
+//- The materials: hematite of Table 5.1 (softened for the DEM), the walls
+//  of the same material
+dictionary materials()
+{
+    return dictionary
+    (
+        IStringStream
+        (
+            "hematite"
+            "{"
+            "    density 5240; youngsModulus 359e9; demYoungsModulus 1e6;"
+            "    poissonsRatio 0.12;"
+            "    surfaceTension 1; latticeConstant 1.38e-9;"
+            "    surfaceDiffusion ((1173.15 2.8e-13 1.74e5) (1e30 1.6e5 5.79e5));"
+            "    tensileStrength polynomial ((415377459.1 0) (-173.6283211 2));"
+            "}"
+            "particle hematite;"
+            "walls { \".*\" hematite; }"
         )()
     );
 }
@@ -119,8 +133,8 @@ result run
     const scalar tAct = 0
 )
 {
-    demEngine with(engineDict("solidBridge", C, tAct), K);
-    demEngine without(engineDict("none", C, tAct), K);
+    demEngine with(engineDict("solidBridge", C, tAct), materials(), K);
+    demEngine without(engineDict("none", C, tAct), materials(), K);
     hold(with, K, T);
     hold(without, K, T);
     for (label k = 0; k < n; ++k)
@@ -165,6 +179,7 @@ scalar wallRun
         demEngine e
         (
             engineDict(k ? "none" : "solidBridge", "smooth", 0, wallTemperature),
+            materials(),
             1
         );
         e.setWalls(demWalls(points, faces));
@@ -250,7 +265,7 @@ int main(int argc, char *argv[])
     // The contact ends after 1000 steps: the history resets (no bridge),
     // and a new contact starts again from one step (eq 5.11)
     {
-        demEngine e(engineDict("solidBridge", "smooth", 0), 1);
+        demEngine e(engineDict("solidBridge", "smooth", 0), materials(), 1);
         hold(e, 1, 1273.15);
         for (label k = 0; k < 1000; ++k)
         {

@@ -40,6 +40,19 @@ Foam::scalar timeCorrection
     return std::pow(a.effectiveModulus(b)/a.effectiveRealModulus(b), 0.4);
 }
 
+//- The material in the model's settings is an old layout: fatal
+void checkNoMaterial(const Foam::dictionary& coeffs)
+{
+    if (coeffs.found("material"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword material in " << coeffs.name()
+            << " is no longer read: the sintering data are those of the"
+            << " particles' material in constant/materialProperties"
+            << Foam::exit(Foam::FatalIOError);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -51,7 +64,7 @@ void Foam::cohesionModels::solidBridge::Factors::evaluate(const scalar T)
             << "contact temperature " << T << " K is below 200 K: particle"
                " temperatures are in kelvin" << exit(FatalError);
     }
-    growth_ = c_*law_.neckGrowthRate(1, T)*deltaT_;
+    rate_ = law_.neckGrowthRate(1, T);
     strength_ = scale_*law_.forceFromNeck(1, T);
     T_ = T;
 }
@@ -84,16 +97,22 @@ Foam::cohesionModels::solidBridge::solidBridge
 )
 :
     coeffs_(dict.subDict("solidBridgeCoeffs")),
-    material_(coeffs_.subDict("material")),
+    material_((checkNoMaterial(coeffs_), law.materials().particleDict())),
     law_(material_, coeffs_),
     activationTime_(coeffs_.lookupOrDefault<scalar>("activationTime", 0)),
     K_(coarseGrainFactor),
     forceScale_(std::pow(K_, 12.0/7.0)),
     cPair_(timeCorrection(law.particleMaterial(), law.particleMaterial())),
-    cWall_(timeCorrection(law.particleMaterial(), law.wallMaterial())),
+    cWall_(law.materials().nWalls()),
     wallTemperature_(readWallTemperature(coeffs_)),
     bridgeSlot_(slots.addScalar("bridge", typeName, false))
 {
+    forAll(cWall_, m)
+    {
+        cWall_[m] =
+            timeCorrection(law.particleMaterial(), law.materials().wall(m));
+    }
+
     if (activationTime_ < 0)
     {
         FatalIOErrorInFunction(coeffs_)
@@ -103,7 +122,8 @@ Foam::cohesionModels::solidBridge::solidBridge
 
     Info<< "    solid bridges: C " << law_.C() << ", activation at "
         << activationTime_ << " s, contact-time correction c = " << cPair_
-        << " (pairs), " << cWall_ << " (walls), force scale K^(12/7) = "
+        << " (pairs), " << cWall_ << " (walls: "
+        << law.materials().wallNames() << "), force scale K^(12/7) = "
         << forceScale_ << ", wall contacts at the "
         << wallTemperatureModelNames[wallTemperature_] << "'s temperature"
         << endl;

@@ -90,20 +90,34 @@ Foam::scalar Foam::contactLaws::HertzMindlin::dampingFactor(const scalar e)
 Foam::contactLaws::HertzMindlin::HertzMindlin
 (
     const dictionary& dict,
+    const contactMaterials& materials,
     const scalar coarseGrainFactor,
     contactSlots& slots
 )
 :
-    contactLawTemplate<HertzMindlin>(dict, coarseGrainFactor, slots, true),
-    YStarPP_(particle_.effectiveModulus(particle_)),
-    YStarPW_(particle_.effectiveModulus(wall_)),
+    contactLawTemplate<HertzMindlin>
+    (
+        dict, materials, coarseGrainFactor, slots, true
+    ),
+    YStarPP_(materials.particle().effectiveModulus(materials.particle())),
+    YStarPW_(materials.nWalls()),
     alphaPP_(dampingFactor(particleParticle_.restitution())),
     alphaPW_(dampingFactor(particleWall_.restitution())),
-    kappaPP_(4*particle_.effectiveShearModulus(particle_)/YStarPP_),
-    kappaPW_(4*particle_.effectiveShearModulus(wall_)/YStarPW_),
+    kappaPP_
+    (
+        4*materials.particle().effectiveShearModulus(materials.particle())
+       /YStarPP_
+    ),
     sqrtKappaPP_(sqrt(kappaPP_)),
-    sqrtKappaPW_(sqrt(kappaPW_))
-{}
+    kappaPW_(materials.nWalls())
+{
+    const contactMaterial& p = materials.particle();
+    forAll(YStarPW_, m)
+    {
+        YStarPW_[m] = p.effectiveModulus(materials.wall(m));
+        kappaPW_[m] = 4*p.effectiveShearModulus(materials.wall(m))/YStarPW_[m];
+    }
+}
 
 
 Foam::scalar Foam::contactLaws::HertzMindlin::collisionTime
@@ -113,9 +127,26 @@ Foam::scalar Foam::contactLaws::HertzMindlin::collisionTime
     const scalar v
 ) const
 {
-    // Eq 5.12 for two equal particles of the DEM material
-    return HertzCollision
+    // Eq 5.12 for two equal particles of the DEM material, and for a
+    // particle on each wall material (r* = r, m* = m: a partner of
+    // infinite radius and mass)
+    const contactMaterial& p = materials_.particle();
+    scalar tc = HertzCollision
     (
-        r, m, particle_.youngsModulus(), particle_.poissonsRatio()
+        r, m, p.youngsModulus(), p.poissonsRatio()
     ).contactTime(v);
+    for (label w = 0; w < materials_.nWalls(); ++w)
+    {
+        const contactMaterial& wm = materials_.wall(w);
+        tc = min
+        (
+            tc,
+            HertzCollision
+            (
+                r, m, p.youngsModulus(), p.poissonsRatio(),
+                GREAT, GREAT, wm.youngsModulus(), wm.poissonsRatio()
+            ).contactTime(v)
+        );
+    }
+    return tc;
 }

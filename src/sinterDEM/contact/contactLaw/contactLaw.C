@@ -10,16 +10,40 @@ namespace Foam
 }
 
 
+namespace
+{
+
+//- Elastic data in the law's settings are an old layout: fatal
+void checkNoMaterials(const Foam::dictionary& dict)
+{
+    for (const char* key : {"particle", "wall"})
+    {
+        if (dict.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword " << key << " in " << dict.name()
+                << " is no longer read: the elastic data of the particles"
+                << " and walls are in constant/materialProperties"
+                << " (youngsModulus, demYoungsModulus, poissonsRatio of"
+                << " the materials named by particle and walls)"
+                << Foam::exit(Foam::FatalIOError);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
 Foam::contactLaw::contactLaw
 (
     const dictionary& dict,
+    const contactMaterials& materials,
     const scalar coarseGrainFactor,
     contactSlots& slots,
     const bool restitution
 )
 :
-    particle_(dict.subDict("particle")),
-    wall_(dict.subDict("wall")),
+    materials_((checkNoMaterials(dict), materials)),
     particleParticle_(dict.subDict("particleParticle"), restitution),
     particleWall_(dict.subDict("particleWall"), restitution),
     coarseGrainFactor_(coarseGrainFactor),
@@ -30,6 +54,7 @@ Foam::contactLaw::contactLaw
 Foam::autoPtr<Foam::contactLaw> Foam::contactLaw::New
 (
     const dictionary& dict,
+    const contactMaterials& materials,
     const scalar coarseGrainFactor,
     contactSlots& slots
 )
@@ -49,5 +74,5 @@ Foam::autoPtr<Foam::contactLaw> Foam::contactLaw::New
         ) << exit(FatalIOError);
     }
 
-    return cstrIter()(dict, coarseGrainFactor, slots);
+    return cstrIter()(dict, materials, coarseGrainFactor, slots);
 }

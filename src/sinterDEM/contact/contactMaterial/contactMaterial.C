@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactMaterial.H"
+#include "effectiveProperties.H"
 
 namespace
 {
@@ -23,13 +24,13 @@ Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
 
 Foam::contactMaterial::contactMaterial(const dictionary& dict)
 :
-    youngsModulus_(readPositive(dict, "youngsModulus")),
-    realYoungsModulus_
+    youngsModulus_
     (
-        dict.found("realYoungsModulus")
-      ? readPositive(dict, "realYoungsModulus")
-      : youngsModulus_
+        dict.found("demYoungsModulus")
+      ? readPositive(dict, "demYoungsModulus")
+      : readPositive(dict, "youngsModulus")
     ),
+    realYoungsModulus_(readPositive(dict, "youngsModulus")),
     poissonsRatio_(dict.get<scalar>("poissonsRatio"))
 {
     if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))
@@ -50,28 +51,12 @@ Foam::contactMaterial::contactMaterial(scalar Y, scalar Y0, scalar nu)
 {}
 
 
-namespace
-{
-
-//- 1/Y* = (1 - nu_1^2)/Y_1 + (1 - nu_2^2)/Y_2
-Foam::scalar combinedModulus
-(
-    const Foam::scalar Y1, const Foam::scalar nu1,
-    const Foam::scalar Y2, const Foam::scalar nu2
-)
-{
-    return 1.0/((1 - Foam::sqr(nu1))/Y1 + (1 - Foam::sqr(nu2))/Y2);
-}
-
-} // End anonymous namespace
-
-
 Foam::scalar Foam::contactMaterial::effectiveModulus
 (
     const contactMaterial& other
 ) const
 {
-    return combinedModulus
+    return effective::modulus
     (
         youngsModulus_, poissonsRatio_,
         other.youngsModulus_, other.poissonsRatio_
@@ -84,7 +69,7 @@ Foam::scalar Foam::contactMaterial::effectiveRealModulus
     const contactMaterial& other
 ) const
 {
-    return combinedModulus
+    return effective::modulus
     (
         realYoungsModulus_, poissonsRatio_,
         other.realYoungsModulus_, other.poissonsRatio_
@@ -97,14 +82,11 @@ Foam::scalar Foam::contactMaterial::effectiveShearModulus
     const contactMaterial& other
 ) const
 {
-    const scalar nu1 = poissonsRatio_;
-    const scalar nu2 = other.poissonsRatio_;
-    return
-        1.0
-       /(
-            2*(2 - nu1)*(1 + nu1)/youngsModulus_
-          + 2*(2 - nu2)*(1 + nu2)/other.youngsModulus_
-        );
+    return effective::shearModulus
+    (
+        youngsModulus_, poissonsRatio_,
+        other.youngsModulus_, other.poissonsRatio_
+    );
 }
 
 

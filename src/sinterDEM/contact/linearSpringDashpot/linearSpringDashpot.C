@@ -42,6 +42,7 @@ Foam::scalar readNonNegative
 Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
 (
     const dictionary& dict,
+    const contactMaterials& materials,
     const scalar coarseGrainFactor,
     contactSlots& slots
 )
@@ -49,6 +50,7 @@ Foam::contactLaws::linearSpringDashpot::linearSpringDashpot
     contactLawTemplate<linearSpringDashpot>
     (
         dict,
+        materials,
         coarseGrainFactor,
         slots,
         false

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "HertzCollision.H"
+#include "effectiveProperties.H"
 #include "error.H"
 
 Foam::HertzCollision::HertzCollision
@@ -10,9 +11,9 @@ Foam::HertzCollision::HertzCollision
     const scalar rj, const scalar mj, const scalar Yj, const scalar nuj
 )
 :
-    rStar_(1/(1/ri + 1/rj)),
-    mStar_(1/(1/mi + 1/mj)),
-    YStar_(1/((1 - sqr(nui))/Yi + (1 - sqr(nuj))/Yj))
+    rStar_(effective::radius(ri, rj)),
+    mStar_(effective::massFromInverse(1/mi, 1/mj)),
+    YStar_(effective::modulus(Yi, nui, Yj, nuj))
 {
     if (!(ri > 0 && rj > 0 && mi > 0 && mj > 0 && Yi > 0 && Yj > 0))
     {

@@ -64,13 +64,17 @@ int main(int argc, char *argv[])
     IStringStream settings
     (
         "contactLaw HertzMindlin;"
-        "particle { youngsModulus 5e6; poissonsRatio 0.22; }"
-        "wall { youngsModulus 5e6; poissonsRatio 0.22; }"
         "particleParticle { restitution 0.5; friction 0.5; }"
         "particleWall { restitution 0.5; friction 0.5; }"
         "skin 0.1;"
     );
-    demEngine engine(dictionary(settings), 1);
+    IStringStream materials
+    (
+        "glass { youngsModulus 5e6; poissonsRatio 0.22; }"
+        "particle glass;"
+        "walls { \".*\" glass; }"
+    );
+    demEngine engine(dictionary(settings), dictionary(materials), 1);
 
     // Floor and four side walls, normals out of the box
     const pointField pts

@@ -89,18 +89,20 @@ void Foam::DEMCloud<CloudType>::syncParticles(TrackCloudType& cloud)
     const demParticles& P = engine.particles();
     const label nLocal = engine.nLocal();
 
+    // The same particles (in any order: the engine may sort them): each
+    // parcel's index is a local particle of its identity, and identities
+    // are unique
     bool same = this->size() == nLocal;
     if (same)
     {
-        label n = 0;
         for (const parcelType& p : cloud)
         {
-            if (p.demIndex() != n || P.identity[n] != p.identity())
+            const label k = p.demIndex();
+            if (k < 0 || k >= nLocal || P.identity[k] != p.identity())
             {
                 same = false;
                 break;
             }
-            ++n;
         }
     }
     if (same)
@@ -201,9 +203,9 @@ void Foam::DEMCloud<CloudType>::motion
     // 2. Fluid forces and heat, once per parcel, at the start position
     sourceCell_.setSize(nLocal);
     heatFraction_.setSize(nLocal);
-    label n = 0;
     for (parcelType& p : cloud)
     {
+        const label n = p.demIndex();
         p.setCellValues(cloud, td);
         p.calcDispersion(cloud, td, dt);
         if (correctSource)
@@ -256,23 +258,40 @@ void Foam::DEMCloud<CloudType>::motion
         P.temperature[n] = T0;
         sourceCell_[n] = celli;
         heatFraction_[n] = fraction;
-        ++n;
     }
 
     // 3. The DEM sub-steps
     collision_->collide(dt);
 
+    // The engine sorted its particles: the parcels and their sources follow
+    if (engine.moved())
+    {
+        const labelList& newIndex = engine.newIndex();
+        for (parcelType& p : cloud)
+        {
+            p.demIndex() = newIndex[p.demIndex()];
+        }
+        labelList cell(nLocal);
+        scalarList fraction(nLocal);
+        forAll(newIndex, k)
+        {
+            cell[newIndex[k]] = sourceCell_[k];
+            fraction[newIndex[k]] = heatFraction_[k];
+        }
+        sourceCell_.transfer(cell);
+        heatFraction_.transfer(fraction);
+    }
+
     // 4. Results onto the parcels; the gas loses the drag impulse
-    n = 0;
     for (parcelType& p : cloud)
     {
+        const label n = p.demIndex();
         if (coupled)
         {
             this->UTrans()[sourceCell_[n]] -= p.nParticle()*P.dragImpulse[n];
         }
         p.displacement() = P.position[n] - p.position();
         p.U() = P.velocity[n];
-        ++n;
     }
 
     // A time to be written: the lists are built again from the written

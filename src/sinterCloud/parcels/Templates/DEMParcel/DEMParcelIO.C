@@ -283,6 +283,22 @@ void Foam::DEMParcel<ParcelType>::readFields(CloudType& c)
                     }
                 }
             }
+
+            // This parcel's entries are copied: free them now, so that the
+            // records are not held twice while the cloud is read
+            partner()[i].clear();
+            faceCentre()[i].clear();
+            forAll(slots.slots(), si)
+            {
+                if (vectorSlots.set(si))
+                {
+                    vectorSlots[si][i].clear();
+                }
+                if (scalarSlots.set(si))
+                {
+                    scalarSlots[si][i].clear();
+                }
+            }
         }
         ++i;
     }

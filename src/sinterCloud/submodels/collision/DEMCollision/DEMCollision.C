@@ -6,6 +6,7 @@
 #include "coarseGrainFactor.H"
 #include "wallPolyPatch.H"
 #include "volFields.H"
+#include "IOdictionary.H"
 
 template<class CloudType>
 Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
@@ -47,16 +48,40 @@ Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
     DynamicList<face> faces;
+    DynamicList<label> material;
     for (const label patchi : wallPatches_)
     {
         const polyPatch& pp = patches[patchi];
+        const label m = engine_.materials().wallMaterial(pp.name());
         forAll(pp, i)
         {
             faces.append(pp[i]);
+            material.append(m);
         }
     }
 
-    return demWalls(mesh.points(), faceList(std::move(faces)));
+    return demWalls(mesh.points(), faceList(std::move(faces)), material);
+}
+
+
+template<class CloudType>
+Foam::dictionary Foam::DEMCollision<CloudType>::readMaterials
+(
+    const fvMesh& mesh
+)
+{
+    return IOdictionary
+    (
+        IOobject
+        (
+            "materialProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
 }
 
 
@@ -90,7 +115,12 @@ Foam::DEMCollision<CloudType>::DEMCollision
 :
     owner_(owner),
     coeffs_(coeffDict(subModels)),
-    engine_(coeffs_, coarseGrainFactor(owner.constProps().dict())),
+    engine_
+    (
+        coeffs_,
+        readMaterials(owner.mesh()),
+        coarseGrainFactor(owner.constProps().dict())
+    ),
     deltaT_(coeffs_.lookupOrDefault<scalar>("deltaT", 0)),
     fraction_(coeffs_.lookupOrDefault<scalar>("collisionTimeFraction", 0)),
     impactVelocity_(coeffs_.lookupOrDefault<scalar>("impactVelocity", 1))
@@ -133,8 +163,22 @@ Foam::DEMCollision<CloudType>::DEMCollision
             << exit(FatalIOError);
     }
 
-    // Sintering laws take kelvin: a temperature below 200 K was given in C
+    // The cloud's density and heat capacity are the particles' material's
     const dictionary& constProps = owner.constProps().dict();
+    const contactMaterials& materials = engine_.materials();
+    materials.checkSame
+    (
+        constProps, "rho0", constProps.get<scalar>("rho0"), "density"
+    );
+    if (constProps.found("Cp0"))
+    {
+        materials.checkSame
+        (
+            constProps, "Cp0", constProps.get<scalar>("Cp0"), "specificHeat"
+        );
+    }
+
+    // Sintering laws take kelvin: a temperature below 200 K was given in C
     if (engine_.cohesion().active() && constProps.found("T0"))
     {
         const scalar T0 = constProps.get<scalar>("T0");
@@ -159,6 +203,9 @@ Foam::DEMCollision<CloudType>::DEMCollision
 
     wallPatches_ = wallPatchIds();
     engine_.setWalls(meshWalls());
+
+    // The parcels follow the engine's particles wherever it sorts them
+    engine_.setSpatialSort(true);
 }
 
 
