@@ -477,8 +477,10 @@ void Foam::demEngine::sortLocals(const scalar range)
         newIndex, stride,
         pendingWallParticle_, pendingWallCentre_, pendingWallState_
     );
+    // In place, through the list-build positions (rebuilt after this)
     P.resize(nL);
-    P.reorder(order);
+    builtAt_.resize(nL);
+    P.permute(order, builtAt_);
 
     if (movedValid_)
     {

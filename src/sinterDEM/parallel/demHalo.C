@@ -124,33 +124,90 @@ void Foam::demHalo::update
     const bool withTemperature
 ) const
 {
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    // Scalars per ghost: position, velocity, angular velocity (, T)
+    const label nv = withTemperature ? 10 : 9;
+
+    label nSend = 0;
+    for (const labelList& send : sendMap_)
+    {
+        nSend += send.size();
+    }
+    label nRecv = 0;
+    for (const label n : nReceived_)
+    {
+        nRecv += n;
+    }
+    sendBuf_.resize(nSend*nv);
+    recvBuf_.resize(nRecv*nv);
+
+    const label startRequest = UPstream::nRequests();
+    const int tag = UPstream::msgType();
+
+    // Receives first, then the packed sends
+    label offset = 0;
     forAll(neighbours_, k)
     {
-        UOPstream os(neighbours_[k], buffers);
+        const label n = nReceived_[k]*nv;
+        if (n)
+        {
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<char*>(recvBuf_.data() + offset),
+                n*sizeof(scalar),
+                tag
+            );
+        }
+        offset += n;
+    }
+
+    scalar* __restrict__ b = sendBuf_.data();
+    offset = 0;
+    forAll(neighbours_, k)
+    {
+        const label start = offset;
         for (const label i : sendMap_[k])
         {
-            os << P.position[i] << P.velocity[i] << P.angularVelocity[i];
+            const vector& x = P.position[i];
+            const vector& v = P.velocity[i];
+            const vector& w = P.angularVelocity[i];
+            b[offset++] = x.x(); b[offset++] = x.y(); b[offset++] = x.z();
+            b[offset++] = v.x(); b[offset++] = v.y(); b[offset++] = v.z();
+            b[offset++] = w.x(); b[offset++] = w.y(); b[offset++] = w.z();
             if (withTemperature)
             {
-                os << P.temperature[i];
+                b[offset++] = P.temperature[i];
             }
+        }
+        if (offset > start)
+        {
+            UOPstream::write
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<const char*>(b + start),
+                (offset - start)*sizeof(scalar),
+                tag
+            );
         }
     }
-    buffers.finishedSends();
 
-    label g = nLocal;
-    forAll(neighbours_, k)
+    UPstream::waitRequests(startRequest);
+
+    const scalar* __restrict__ r = recvBuf_.cdata();
+    offset = 0;
+    for (label g = nLocal; g < nLocal + nRecv; ++g)
     {
-        UIPstream is(neighbours_[k], buffers);
-        for (label n = 0; n < nReceived_[k]; ++n, ++g)
+        P.position[g] = vector(r[offset], r[offset + 1], r[offset + 2]);
+        P.velocity[g] = vector(r[offset + 3], r[offset + 4], r[offset + 5]);
+        P.angularVelocity[g] =
+            vector(r[offset + 6], r[offset + 7], r[offset + 8]);
+        if (withTemperature)
         {
-            is >> P.position[g] >> P.velocity[g] >> P.angularVelocity[g];
-            if (withTemperature)
-            {
-                is >> P.temperature[g];
-            }
+            P.temperature[g] = r[offset + 9];
         }
+        offset += nv;
     }
 }
 
