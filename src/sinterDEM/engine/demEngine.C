@@ -203,14 +203,26 @@ void Foam::demEngine::clearLists()
 }
 
 
-void Foam::demEngine::clearPending()
+void Foam::demEngine::clearPending(const bool freeStorage)
 {
-    pendingPairParticle_.clearStorage();
-    pendingPairPartner_.clearStorage();
-    pendingPairState_.clearStorage();
-    pendingWallParticle_.clearStorage();
-    pendingWallCentre_.clearStorage();
-    pendingWallState_.clearStorage();
+    if (freeStorage)
+    {
+        pendingPairParticle_.clearStorage();
+        pendingPairPartner_.clearStorage();
+        pendingPairState_.clearStorage();
+        pendingWallParticle_.clearStorage();
+        pendingWallCentre_.clearStorage();
+        pendingWallState_.clearStorage();
+    }
+    else
+    {
+        pendingPairParticle_.clear();
+        pendingPairPartner_.clear();
+        pendingPairState_.clear();
+        pendingWallParticle_.clear();
+        pendingWallCentre_.clear();
+        pendingWallState_.clear();
+    }
     recordIndexValid_ = false;
 }
 
@@ -237,12 +249,16 @@ void Foam::demEngine::keepStates(const labelUList& newIndex)
     {
         nWalls += wallContacts_.stateOf(k)[dur] > 0;
     }
-    pendingPairParticle_.setCapacity(pendingPairParticle_.size() + nPairs);
-    pendingPairPartner_.setCapacity(pendingPairPartner_.size() + nPairs);
-    pendingPairState_.setCapacity(pendingPairState_.size() + nPairs*stride);
-    pendingWallParticle_.setCapacity(pendingWallParticle_.size() + nWalls);
-    pendingWallCentre_.setCapacity(pendingWallCentre_.size() + nWalls);
-    pendingWallState_.setCapacity(pendingWallState_.size() + nWalls*stride);
+    growPending
+    (
+        pendingPairParticle_, pendingPairPartner_, pendingPairState_,
+        nPairs, stride
+    );
+    growPending
+    (
+        pendingWallParticle_, pendingWallCentre_, pendingWallState_,
+        nWalls, stride
+    );
 
     for (label k = 0; k < pairs_.size(); ++k)
     {
@@ -413,28 +429,30 @@ void Foam::demEngine::sortLocals(const scalar range)
     }
     const label nBins = nx*ny*nz;
 
-    labelList bin(nL);
-    labelList start(nBins + 1, Zero);
-    for (label i = 0; i < nL; ++i)
+    auto binOf = [&](const label i)
     {
         const vector rel = (P.position[i] - box.min())/width;
         const label ix = min(label(rel.x()), nx - 1);
         const label iy = min(label(rel.y()), ny - 1);
         const label iz = min(label(rel.z()), nz - 1);
-        bin[i] = ix + nx*(iy + ny*iz);
-        ++start[bin[i] + 1];
-    }
-    for (label b = 0; b < nBins; ++b)
+        return ix + nx*(iy + ny*iz);
+    };
+
+    // Counting sort, placed backwards from each bin's end: start[b] is
+    // then the beginning of bin b, in particle order within it
+    labelList start(nBins + 1, Zero);
+    for (label i = 0; i < nL; ++i)
     {
-        start[b + 1] += start[b];
+        ++start[binOf(i)];
+    }
+    for (label b = 1; b <= nBins; ++b)
+    {
+        start[b] += start[b - 1];
     }
     labelList order(nL);
+    for (label i = nL - 1; i >= 0; --i)
     {
-        labelList fill(SubList<label>(start, nBins));
-        for (label i = 0; i < nL; ++i)
-        {
-            order[fill[bin[i]]++] = i;
-        }
+        order[--start[binOf(i)]] = i;
     }
 
     // Within a bin by identity (a few particles: insertion sort)
@@ -614,7 +632,8 @@ void Foam::demEngine::rebuild()
         }
     }
 
-    clearPending();
+    // Kept for the next build (no allocation per build)
+    clearPending(false);
 
     lastPairs_ = pairs_.size();
     lastWalls_ = wallContacts_.size();
