@@ -305,6 +305,22 @@ void Foam::demEngine::keepStates(const labelUList& newIndex)
 }
 
 
+void Foam::demEngine::remapPendingStates(const labelUList& newIndex)
+{
+    const label stride = slots_.stride();
+    remapPending
+    (
+        newIndex, stride,
+        pendingPairParticle_, pendingPairPartner_, pendingPairState_
+    );
+    remapPending
+    (
+        newIndex, stride,
+        pendingWallParticle_, pendingWallCentre_, pendingWallState_
+    );
+}
+
+
 void Foam::demEngine::reorder(const labelUList& order)
 {
     const label nOld = nLocal();
@@ -320,18 +336,7 @@ void Foam::demEngine::reorder(const labelUList& order)
     // A pair whose first particle goes is kept from its second's side
     keepStates(newIndex);
 
-    // Pending states of the particles that stay, by their new index
-    const label stride = slots_.stride();
-    remapPending
-    (
-        newIndex, stride,
-        pendingPairParticle_, pendingPairPartner_, pendingPairState_
-    );
-    remapPending
-    (
-        newIndex, stride,
-        pendingWallParticle_, pendingWallCentre_, pendingWallState_
-    );
+    remapPendingStates(newIndex);
 
     particles_.resize(nOld);
     particles_.reorder(order);
@@ -410,50 +415,12 @@ void Foam::demEngine::sortLocals(const scalar range)
         return;
     }
 
-    // Bins over the locals' box, numbered x fastest; no more bins than a
-    // few per particle (sparse particles)
-    const boundBox box(SubList<vector>(P.position, nL), false);
-    const vector span = box.span();
-    scalar width = range;
-    label nx, ny, nz;
-    while (true)
-    {
-        nx = label(span.x()/width) + 1;
-        ny = label(span.y()/width) + 1;
-        nz = label(span.z()/width) + 1;
-        if (scalar(nx)*ny*nz <= 8*nL + 27)
-        {
-            break;
-        }
-        width *= 1.26;
-    }
-    const label nBins = nx*ny*nz;
-
-    auto binOf = [&](const label i)
-    {
-        const vector rel = (P.position[i] - box.min())/width;
-        const label ix = min(label(rel.x()), nx - 1);
-        const label iy = min(label(rel.y()), ny - 1);
-        const label iz = min(label(rel.z()), nz - 1);
-        return ix + nx*(iy + ny*iz);
-    };
-
-    // Counting sort, placed backwards from each bin's end: start[b] is
-    // then the beginning of bin b, in particle order within it
-    labelList start(nBins + 1, Zero);
-    for (label i = 0; i < nL; ++i)
-    {
-        ++start[binOf(i)];
-    }
-    for (label b = 1; b <= nBins; ++b)
-    {
-        start[b] += start[b - 1];
-    }
-    labelList order(nL);
-    for (label i = nL - 1; i >= 0; --i)
-    {
-        order[--start[binOf(i)]] = i;
-    }
+    // The bins of the locals (the list build bins them again with the
+    // ghosts), then by identity within a bin
+    bins_.build(SubList<vector>(P.position, nL), range);
+    labelList order(bins_.sorted());
+    const labelList& start = bins_.start();
+    const label nBins = start.size() - 1;
 
     // Within a bin by identity (a few particles: insertion sort)
     const demIdentity* id = P.identity.cdata();
@@ -484,17 +451,8 @@ void Foam::demEngine::sortLocals(const scalar range)
         return;
     }
 
-    const label stride = slots_.stride();
-    remapPending
-    (
-        newIndex, stride,
-        pendingPairParticle_, pendingPairPartner_, pendingPairState_
-    );
-    remapPending
-    (
-        newIndex, stride,
-        pendingWallParticle_, pendingWallCentre_, pendingWallState_
-    );
+    remapPendingStates(newIndex);
+
     // In place, through the list-build positions (rebuilt after this)
     P.resize(nL);
     builtAt_.resize(nL);

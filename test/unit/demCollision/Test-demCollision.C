@@ -430,6 +430,49 @@ void caseSettledBed()
 }
 
 
+//- A box of 6 x 6 x 3 spheres (fillBox) settled for 20,000 steps; the
+//  step [s]
+scalar settledBox(demEngine& dem, scalar& weight)
+{
+    const scalar dt = fillBox(dem, 6, 3, weight);
+    dem.initialise();
+    for (label step = 0; step < 20000; ++step)
+    {
+        dem.step(dt);
+    }
+    return dt;
+}
+
+
+//- The order n - 1, ..., 0
+labelList reversedOrder(const label n)
+{
+    labelList order(n);
+    forAll(order, k)
+    {
+        order[k] = n - 1 - k;
+    }
+    return order;
+}
+
+
+//- 2000 steps with a sideways push on every particle (half the bed's
+//  weight in all)
+void shake(demEngine& dem, const scalar weight, const scalar dt)
+{
+    demParticles& P = dem.particles();
+    const label n = P.size();
+    forAll(P.externalForce, i)
+    {
+        P.externalForce[i].x() += 0.5*weight/n;
+    }
+    for (label step = 0; step < 2000; ++step)
+    {
+        dem.step(dt);
+    }
+}
+
+
 //- Copy the particles of one engine into another (a restart): the state
 //  the cloud keeps on its parcels, in the given order, and the contacts
 //  as records
@@ -498,12 +541,7 @@ void casePersistentState()
     const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
     demEngine a(dict, materials(), 1);
     scalar weight;
-    const scalar dt = fillBox(a, 6, 3, weight);
-    a.initialise();
-    for (label step = 0; step < 20000; ++step)
-    {
-        a.step(dt);
-    }
+    const scalar dt = settledBox(a, weight);
 
     // Settled: CFD steps of 10 sub-steps, lists rebuilt only on demand
     const label builds0 = a.nBuilds();
@@ -622,11 +660,7 @@ void casePersistentState()
     // A restart: same order, contacts as records
     const label n = a.particles().size();
     labelList same(identity(n));
-    labelList reversed(n);
-    forAll(reversed, k)
-    {
-        reversed[k] = n - 1 - k;
-    }
+    const labelList reversed(reversedOrder(n));
     demEngine b(dict, materials(), 1);
     demEngine c(dict, materials(), 1);
     b.setWalls(a.walls());
@@ -649,15 +683,7 @@ void casePersistentState()
     // Shaken: 2000 steps with a sideways push on every particle
     for (demEngine* e : {&a, &b, &c})
     {
-        demParticles& P = e->particles();
-        forAll(P.externalForce, i)
-        {
-            P.externalForce[i].x() += 0.5*weight/n;
-        }
-        for (label step = 0; step < 2000; ++step)
-        {
-            e->step(dt);
-        }
+        shake(*e, weight, dt);
     }
     check("restart copy: largest position difference [m]", largestDifference(a, b), 0, 0);
     const scalar dc = largestDifference(a, c);
@@ -679,19 +705,10 @@ void caseSpatialSort()
     const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
     demEngine a(dict, materials(), 1);
     scalar weight;
-    const scalar dt = fillBox(a, 6, 3, weight);
-    a.initialise();
-    for (label step = 0; step < 20000; ++step)
-    {
-        a.step(dt);
-    }
+    const scalar dt = settledBox(a, weight);
 
     const label n = a.particles().size();
-    labelList reversed(n);
-    forAll(reversed, k)
-    {
-        reversed[k] = n - 1 - k;
-    }
+    const labelList reversed(reversedOrder(n));
     demEngine b(dict, materials(), 1);
     demEngine c(dict, materials(), 1);
     for (demEngine* e : {&b, &c})
@@ -727,15 +744,7 @@ void caseSpatialSort()
 
     for (demEngine* e : {&a, &b, &c})
     {
-        demParticles& P = e->particles();
-        forAll(P.externalForce, i)
-        {
-            P.externalForce[i].x() += 0.5*weight/n;
-        }
-        for (label step = 0; step < 2000; ++step)
-        {
-            e->step(dt);
-        }
+        shake(*e, weight, dt);
     }
     check
     (

@@ -109,13 +109,15 @@ Foam::contactLaws::HertzMindlin::HertzMindlin
        /YStarPP_
     ),
     sqrtKappaPP_(sqrt(kappaPP_)),
-    kappaPW_(materials.nWalls())
+    kappaPW_(materials.nWalls()),
+    sqrtKappaPW_(materials.nWalls())
 {
     const contactMaterial& p = materials.particle();
     forAll(YStarPW_, m)
     {
         YStarPW_[m] = p.effectiveModulus(materials.wall(m));
         kappaPW_[m] = 4*p.effectiveShearModulus(materials.wall(m))/YStarPW_[m];
+        sqrtKappaPW_[m] = sqrt(kappaPW_[m]);
     }
 }
 

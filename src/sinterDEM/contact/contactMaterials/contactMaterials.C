@@ -96,20 +96,6 @@ Foam::label Foam::contactMaterials::wallMaterial(const word& patchName) const
 }
 
 
-Foam::scalar Foam::contactMaterials::density() const
-{
-    const dictionary& mat = particleDict();
-    const scalar rho = mat.get<scalar>("density");
-    if (!(rho > 0))
-    {
-        FatalIOErrorInFunction(mat)
-            << "Keyword density in " << mat.name()
-            << " must be positive, not " << rho << exit(FatalIOError);
-    }
-    return rho;
-}
-
-
 void Foam::contactMaterials::checkSame
 (
     const dictionary& dict,
