@@ -46,14 +46,14 @@ void copyBlock(const Foam::scalar* from, Foam::scalar* to, const Foam::label n)
 }
 
 //- Pending states of the particles that stay (newIndex >= 0), renumbered
+//  (the blocks of the others are left to the next compactStates)
 template<class Partner>
 void remapPending
 (
     const Foam::labelUList& newIndex,
-    const Foam::label stride,
     Foam::DynamicList<Foam::label>& particle,
     Foam::DynamicList<Partner>& partner,
-    Foam::DynamicList<Foam::scalar>& state
+    Foam::DynamicList<Foam::label>& block
 )
 {
     using namespace Foam;
@@ -65,16 +65,13 @@ void remapPending
         {
             particle[n] = i;
             partner[n] = partner[p];
-            if (n != p)
-            {
-                copyBlock(state.cdata() + p*stride, state.data() + n*stride, stride);
-            }
+            block[n] = block[p];
             ++n;
         }
     }
     particle.resize(n);
     partner.resize(n);
-    state.resize(n*stride);
+    block.resize(n);
 }
 
 //- Room for n more pending states, growing by a quarter at least (not
@@ -84,9 +81,8 @@ void growPending
 (
     Foam::DynamicList<Foam::label>& particle,
     Foam::DynamicList<Partner>& partner,
-    Foam::DynamicList<Foam::scalar>& state,
-    const Foam::label n,
-    const Foam::label stride
+    Foam::DynamicList<Foam::label>& block,
+    const Foam::label n
 )
 {
     using namespace Foam;
@@ -96,7 +92,7 @@ void growPending
         const label cap = max(need, label(1.25*particle.capacity()) + 16);
         particle.setCapacity(cap);
         partner.setCapacity(cap);
-        state.setCapacity(cap*stride);
+        block.setCapacity(cap);
     }
 }
 
@@ -147,6 +143,8 @@ Foam::demParticles& Foam::demEngine::resetParticles()
     nLocal_ = -1;
     clearPending();
     clearLists();
+    pairs_.clearStates();
+    wallContacts_.clearStates();
     return particles_;
 }
 
@@ -209,19 +207,19 @@ void Foam::demEngine::clearPending(const bool freeStorage)
     {
         pendingPairParticle_.clearStorage();
         pendingPairPartner_.clearStorage();
-        pendingPairState_.clearStorage();
+        pendingPairBlock_.clearStorage();
         pendingWallParticle_.clearStorage();
         pendingWallCentre_.clearStorage();
-        pendingWallState_.clearStorage();
+        pendingWallBlock_.clearStorage();
     }
     else
     {
         pendingPairParticle_.clear();
         pendingPairPartner_.clear();
-        pendingPairState_.clear();
+        pendingPairBlock_.clear();
         pendingWallParticle_.clear();
         pendingWallCentre_.clear();
-        pendingWallState_.clear();
+        pendingWallBlock_.clear();
     }
     recordIndexValid_ = false;
 }
@@ -234,36 +232,33 @@ void Foam::demEngine::keepStates(const labelUList& newIndex)
         return;
     }
 
-    const label dur = durationSlot_;
-    const label stride = slots_.stride();
     const label nL = nLocal();
 
-    // Room for exactly the touching contacts, then the copies
+    // Room for exactly the touching contacts (those with a block), then
+    // their blocks (the states stay where they are)
     label nPairs = 0;
-    for (label k = 0; k < pairs_.size(); ++k)
+    for (const label b : pairs_.slot)
     {
-        nPairs += pairs_.stateOf(k)[dur] > 0;
+        nPairs += b >= 0;
     }
     label nWalls = 0;
-    for (label k = 0; k < wallContacts_.size(); ++k)
+    for (const label b : wallContacts_.slot)
     {
-        nWalls += wallContacts_.stateOf(k)[dur] > 0;
+        nWalls += b >= 0;
     }
     growPending
     (
-        pendingPairParticle_, pendingPairPartner_, pendingPairState_,
-        nPairs, stride
+        pendingPairParticle_, pendingPairPartner_, pendingPairBlock_, nPairs
     );
     growPending
     (
-        pendingWallParticle_, pendingWallCentre_, pendingWallState_,
-        nWalls, stride
+        pendingWallParticle_, pendingWallCentre_, pendingWallBlock_, nWalls
     );
 
     for (label k = 0; k < pairs_.size(); ++k)
     {
-        const scalar* s = pairs_.stateOf(k);
-        if (s[dur] > 0)
+        const label blk = pairs_.slot[k];
+        if (blk >= 0)
         {
             label a = pairs_.first[k];
             label b = pairs_.second[k];
@@ -273,31 +268,21 @@ void Foam::demEngine::keepStates(const labelUList& newIndex)
             if (flip)
             {
                 std::swap(a, b);
+                slots_.flipSides(pairs_.block(blk));
             }
             pendingPairParticle_.append(a);
             pendingPairPartner_.append(particles_.identity[b]);
-            const label start = pendingPairState_.size();
-            for (label c = 0; c < stride; ++c)
-            {
-                pendingPairState_.append(s[c]);
-            }
-            if (flip)
-            {
-                slots_.flipSides(pendingPairState_.data() + start);
-            }
+            pendingPairBlock_.append(blk);
         }
     }
     for (label k = 0; k < wallContacts_.size(); ++k)
     {
-        const scalar* s = wallContacts_.stateOf(k);
-        if (s[dur] > 0)
+        const label blk = wallContacts_.slot[k];
+        if (blk >= 0)
         {
             pendingWallParticle_.append(wallContacts_.first[k]);
             pendingWallCentre_.append(walls_.centre(wallContacts_.second[k]));
-            for (label c = 0; c < stride; ++c)
-            {
-                pendingWallState_.append(s[c]);
-            }
+            pendingWallBlock_.append(blk);
         }
     }
     listsValid_ = false;
@@ -307,16 +292,13 @@ void Foam::demEngine::keepStates(const labelUList& newIndex)
 
 void Foam::demEngine::remapPendingStates(const labelUList& newIndex)
 {
-    const label stride = slots_.stride();
     remapPending
     (
-        newIndex, stride,
-        pendingPairParticle_, pendingPairPartner_, pendingPairState_
+        newIndex, pendingPairParticle_, pendingPairPartner_, pendingPairBlock_
     );
     remapPending
     (
-        newIndex, stride,
-        pendingWallParticle_, pendingWallCentre_, pendingWallState_
+        newIndex, pendingWallParticle_, pendingWallCentre_, pendingWallBlock_
     );
 }
 
@@ -377,29 +359,28 @@ void Foam::demEngine::addRecords(const label i, const contactRecords& records)
             ++nPairs;
         }
     }
-    growPending(pendingPairParticle_, pendingPairPartner_, pendingPairState_, nPairs, stride);
-    growPending(pendingWallParticle_, pendingWallCentre_, pendingWallState_, nWalls, stride);
+    growPending(pendingPairParticle_, pendingPairPartner_, pendingPairBlock_, nPairs);
+    growPending(pendingWallParticle_, pendingWallCentre_, pendingWallBlock_, nWalls);
 
+    // Each state in a new block of its list's pool
     forAll(records.partner, k)
     {
         const scalar* b = records.stateOf(k);
         if (contactRecords::isWall(records.partner[k]))
         {
+            const label blk = wallContacts_.newBlock();
+            copyBlock(b, wallContacts_.block(blk), stride);
             pendingWallParticle_.append(i);
             pendingWallCentre_.append(records.faceCentre[k]);
-            for (label c = 0; c < stride; ++c)
-            {
-                pendingWallState_.append(b[c]);
-            }
+            pendingWallBlock_.append(blk);
         }
         else if (!oneSide || self < records.partner[k])
         {
+            const label blk = pairs_.newBlock();
+            copyBlock(b, pairs_.block(blk), stride);
             pendingPairParticle_.append(i);
             pendingPairPartner_.append(records.partner[k]);
-            for (label c = 0; c < stride; ++c)
-            {
-                pendingPairState_.append(b[c]);
-            }
+            pendingPairBlock_.append(blk);
         }
     }
     recordIndexValid_ = false;
@@ -477,7 +458,6 @@ void Foam::demEngine::rebuild()
 {
     demParticles& P = particles_;
     const label nL = nLocal();
-    const label stride = slots_.stride();
 
     const scalar rMax = maxRadius();
     skin_ = skinFraction_*2*rMax;
@@ -497,6 +477,8 @@ void Foam::demEngine::rebuild()
         // No particles anywhere: empty lists
         clearPending();
         clearLists();
+        pairs_.clearStates();
+        wallContacts_.clearStates();
         listsValid_ = true;
         ++nBuilds_;
         return;
@@ -542,20 +524,15 @@ void Foam::demEngine::rebuild()
         label p = findPair(a, b);
         if (p >= 0)
         {
-            copyBlock
-            (
-                pendingPairState_.cdata() + p*stride,
-                pairs_.stateOf(k),
-                stride
-            );
+            pairs_.slot[k] = pendingPairBlock_[p];
         }
         else if (b < nL && (p = findPair(b, a)) >= 0)
         {
-            scalar* s = pairs_.stateOf(k);
-            copyBlock(pendingPairState_.cdata() + p*stride, s, stride);
-            slots_.flipSides(s);
+            pairs_.slot[k] = pendingPairBlock_[p];
+            slots_.flipSides(pairs_.block(pairs_.slot[k]));
         }
     }
+    pairs_.compactStates(blockScratch_);
 
     // Wall contacts of local particles, states by face centre
     wallContacts_.clearWithRoom(label(1.05*lastWalls_) + 64);
@@ -579,16 +556,12 @@ void Foam::demEngine::rebuild()
             const label p = sorted[q];
             if (magSqr(pendingWallCentre_[p] - centre) < tol2)
             {
-                copyBlock
-                (
-                    pendingWallState_.cdata() + p*stride,
-                    wallContacts_.stateOf(k),
-                    stride
-                );
+                wallContacts_.slot[k] = pendingWallBlock_[p];
                 break;
             }
         }
     }
+    wallContacts_.compactStates(blockScratch_);
 
     // Kept for the next build (no allocation per build)
     clearPending(false);
@@ -908,14 +881,14 @@ void Foam::demEngine::recordsOf(const label i, contactRecords& records) const
                 const label p = c/2;
                 records.partner[k] = pendingPairPartner_[p];
                 records.faceCentre[k] = Zero;
-                copyBlock(pendingPairState_.cdata() + p*stride, b, stride);
+                copyBlock(pairs_.block(pendingPairBlock_[p]), b, stride);
             }
             else
             {
                 const label p = -c - 1;
                 records.partner[k] = -1;
                 records.faceCentre[k] = pendingWallCentre_[p];
-                copyBlock(pendingWallState_.cdata() + p*stride, b, stride);
+                copyBlock(wallContacts_.block(pendingWallBlock_[p]), b, stride);
             }
         }
         else if (c >= 0)
