@@ -11,7 +11,8 @@
 #include "makeParcelPatchInteractionModels.H"
 #include "makeParcelStochasticCollisionModels.H"
 #include "makeThermoParcelSurfaceFilmModels.H"
-#include "makeParcelHeatTransferModels.H"
+#include "NoHeatTransfer.H"
+#include "ConvectionHeatTransfer.H"
 
 // sinterFoam's own forces
 #include "VoidageDragForce.H"
@@ -26,7 +27,9 @@ makeParcelInjectionModels(basicSinterCloud);
 makeParcelPatchInteractionModels(basicSinterCloud);
 makeParcelStochasticCollisionModels(basicSinterCloud);
 makeParcelSurfaceFilmModels(basicSinterCloud);
-makeParcelHeatTransferModels(basicSinterCloud);
+makeHeatTransferModel(basicSinterCloud);
+makeHeatTransferModelType(NoHeatTransfer, basicSinterCloud);
+makeHeatTransferModelType(ConvectionHeatTransfer, basicSinterCloud);
 
 // sinterFoam's additions to the force table
 makeParticleForceModelType(VoidageDragForce, basicSinterCloud);

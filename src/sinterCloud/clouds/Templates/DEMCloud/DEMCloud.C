@@ -16,10 +16,24 @@ Foam::DEMCloud<CloudType>::DEMCloud
 )
 :
     CloudType(cloudName, rho, U, g, thermo, false),
-    massChecked_(false)
+    massChecked_(false),
+    convection_(nullptr)
 {
     if (this->solution().active())
     {
+        if (this->heatTransfer().active())
+        {
+            convection_ =
+                dynamic_cast<const convectionType*>(&this->heatTransfer());
+            if (!convection_)
+            {
+                FatalIOErrorInFunction(this->subModelProperties())
+                    << "heatTransferModel " << this->heatTransfer().type()
+                    << " in " << this->subModelProperties().name()
+                    << ": the DEM cloud takes none or "
+                    << convectionType::typeName << exit(FatalIOError);
+            }
+        }
         if
         (
             this->solution().coupled()

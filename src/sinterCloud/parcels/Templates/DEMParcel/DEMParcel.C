@@ -14,16 +14,37 @@ Foam::scalar Foam::DEMParcel<ParcelType>::calcGasHeat
     scalar& hAdt
 )
 {
-    scalar Ts, rhos, mus, Pr, kappas;
-    this->calcSurfaceValues(cloud, td, this->T(), Ts, rhos, mus, Pr, kappas);
-    const scalar Re = this->Re(rhos, this->U(), td.Uc(), this->d(), mus);
-
     dhsTrans = 0;
     hAdt = 0;
-    return this->calcHeatTransfer
-    (
-        cloud, td, dt, Re, Pr, kappas, 0, 0, dhsTrans, hAdt
-    );
+    if (!cloud.convection())
+    {
+        return this->T();
+    }
+
+    scalar Ts, rhos, mus, Pr, kappas;
+    this->calcSurfaceValues(cloud, td, this->T(), Ts, rhos, mus, Pr, kappas);
+    const scalar hA =
+        cloud.convection()->conductance
+        (
+            this->cell(), this->d(), mag(td.Uc() - this->U()),
+            rhos, mus, kappas, Pr
+        );
+
+    // m c_p dT/dt = h A (T_g - T), T_g held: analytically
+    const scalar mCp = this->mass()*this->Cp();
+    const scalar b = hA/mCp;
+    const scalar deltaT =
+        cloud.TIntegrator().delta(this->T(), dt, b*td.Tc(), b);
+    const scalar Tnew =
+        min
+        (
+            max(this->T() + deltaT, cloud.constProps().TMin()),
+            cloud.constProps().TMax()
+        );
+
+    dhsTrans = -mCp*deltaT;
+    hAdt = dt*hA;
+    return Tnew;
 }
 
 
