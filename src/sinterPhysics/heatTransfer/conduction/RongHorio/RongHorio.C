@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "RongHorio.H"
+#include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
+#include "error.H"
+
+namespace Foam
+{
+namespace indirectConductions
+{
+    defineTypeNameAndDebug(RongHorio, 0);
+    addToRunTimeSelectionTable(indirectConduction, RongHorio, dictionary);
+}
+}
+
+
+namespace
+{
+
+//- int_{r1}^{r2} r/l dr, l = a - sqrt(rp^2 - r^2), both bounds in [0, rp]
+//  with l > 0 between them
+Foam::scalar layerIntegral
+(
+    const Foam::scalar rp,
+    const Foam::scalar a,
+    const Foam::scalar r1,
+    const Foam::scalar r2
+)
+{
+    if (!(r2 > r1))
+    {
+        return 0;
+    }
+    const Foam::scalar u1 = std::sqrt(Foam::max(rp*rp - r1*r1, Foam::scalar(0)));
+    const Foam::scalar u2 = std::sqrt(Foam::max(rp*rp - r2*r2, Foam::scalar(0)));
+    return (u2 - u1) + a*std::log((a - u2)/(a - u1));
+}
+
+} // End anonymous namespace
+
+
+Foam::indirectConductions::RongHorio::RongHorio(const dictionary& dict)
+:
+    indirectConduction(dict),
+    lensRadius_
+    (
+        dict.optionalSubDict(typeName + "Coeffs")
+            .lookupOrDefault<scalar>("lensRadius", 1.4)
+    ),
+    s_
+    (
+        dict.optionalSubDict(typeName + "Coeffs")
+            .get<scalar>("minimumDistance")
+    )
+{
+    const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
+    if (!(lensRadius_ > 1))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword lensRadius in " << coeffs.name() << " is r_lens/r_p"
+            << " and must be > 1 (the lens surrounds the particle), not "
+            << lensRadius_ << exit(FatalIOError);
+    }
+    if (!(s_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Keyword minimumDistance in " << coeffs.name() << " is the"
+            << " minimum conduction distance s [m] and must be > 0, not "
+            << s_ << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::indirectConductions::RongHorio::wallIntegral
+(
+    const scalar r,
+    const scalar gap
+) const
+{
+    const scalar rLens = lensRadius_*r;
+    const scalar a = r + gap;
+
+    // Case 1: the wall outside the lens; a centre on or behind the wall
+    // (an overlap of a radius or more) is not a contact this law describes
+    if (!(a < rLens) || !(a > 0))
+    {
+        return 0;
+    }
+
+    const scalar rOut = min(std::sqrt(rLens*rLens - a*a), r);
+    const scalar rIn = gap < 0 ? std::sqrt(r*r - a*a) : scalar(0);
+
+    if (!(gap < s_))
+    {
+        // Case 2: the gap is at least s everywhere
+        return layerIntegral(r, a, 0, rOut);
+    }
+
+    // Cases 3, 4, 5: the layer is thinner than s out to r_s
+    const scalar h = a - s_;
+    const scalar rs = min(h > 0 ? std::sqrt(r*r - h*h) : r, rOut);
+    const scalar inner = rs > rIn ? (rs*rs - rIn*rIn)/(2*s_) : scalar(0);
+    return inner + layerIntegral(r, a, max(rs, rIn), rOut);
+}
+
+
+Foam::scalar Foam::indirectConductions::RongHorio::wallConductance
+(
+    const scalar kf,
+    const scalar r,
+    const scalar gap
+) const
+{
+    return 2*constant::mathematical::pi*kf*wallIntegral(r, gap);
+}

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "indirectConduction.H"
+#include "addToRunTimeSelectionTable.H"
+#include "error.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(indirectConduction, 0);
+    defineRunTimeSelectionTable(indirectConduction, dictionary);
+    addToRunTimeSelectionTable
+    (
+        indirectConduction,
+        indirectConduction,
+        dictionary
+    );
+}
+
+
+Foam::autoPtr<Foam::indirectConduction> Foam::indirectConduction::New
+(
+    const dictionary& dict
+)
+{
+    const word name(dict.get<word>("indirect"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "indirect",
+            name,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<indirectConduction>(cstrIter()(dict));
+}

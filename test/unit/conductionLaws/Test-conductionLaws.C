@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    Test-conductionLaws
+
+Description
+    The conduction laws of src/sinterPhysics/heatTransfer/conduction:
+
+    - contact radii (conductionGeometry): a sphere on a wall against
+      sqrt(delta (2 r - delta)) (eq 4.26), two equal spheres against
+      sqrt(r delta - delta^2/4), a sphere against a very large one against
+      the wall's, zero and negative overlaps give 0; relative 1e-12
+      (1e-5 for the large sphere);
+    - Batchelor-O'Brien (eq 4.25) for App. B's 1 mm glass particle on
+      aluminium at overlaps 0.002-0.02 r_p, with the thermal overlap
+      c = (Y* / Y*_0)^(2/3) of Table 4.2, against values computed by hand
+      (Python, 40-digit decimals), relative 1e-12;
+    - Rong-Horio (eq 4.31-4.36): the closed form against a quadrature of
+      eq 4.31 (Simpson, split at r_s) in all five cases of Fig 4.2,
+      relative 1e-8; zero outside the lens; continuous where the cases
+      meet (gap = s, gap = 0), relative 1e-9.
+
+    Run with -bad KEY to check a bad-input error instead (direct,
+    lensRadius, minimumDistance).
+*/
+
+#include "argList.H"
+#include "conductionGeometry.H"
+#include "directConduction.H"
+#include "RongHorio.H"
+#include "IOstreams.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam;
+
+static label nFailed = 0;
+
+void check
+(
+    const string& what,
+    const scalar value,
+    const scalar reference,
+    const scalar tol
+)
+{
+    const scalar rel =
+        reference == 0 ? mag(value) : mag(value - reference)/mag(reference);
+    const bool ok = rel <= tol;
+    Info<< (ok ? "ok   " : "FAIL ") << what.c_str() << ": " << value
+        << " (reference " << reference << ", rel. error " << rel
+        << ", tolerance " << tol << ")" << nl;
+    if (!ok)
+    {
+        ++nFailed;
+    }
+}
+
+
+//- int_{r1}^{r2} r/max(l, s) dr by Simpson's rule with n intervals
+scalar simpson
+(
+    const scalar rp,
+    const scalar gap,
+    const scalar s,
+    const scalar r1,
+    const scalar r2,
+    const label n
+)
+{
+    if (!(r2 > r1))
+    {
+        return 0;
+    }
+    auto f = [&](const scalar r)
+    {
+        const scalar l = rp + gap - std::sqrt(max(rp*rp - r*r, scalar(0)));
+        return r/max(l, s);
+    };
+    const scalar h = (r2 - r1)/n;
+    scalar sum = f(r1) + f(r2);
+    for (label i = 1; i < n; ++i)
+    {
+        sum += (i % 2 ? 4 : 2)*f(r1 + i*h);
+    }
+    return sum*h/3;
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList::addOption("bad", "key", "report the error of a bad key");
+    argList args(argc, argv);
+
+    if (args.found("bad"))
+    {
+        const word key(args.get<word>("bad"));
+        dictionary dict;
+        dict.add("direct", key == "direct" ? "Batchelor" : "BatchelorOBrien");
+        dict.add("indirect", "RongHorio");
+        dictionary coeffs;
+        coeffs.add("lensRadius", key == "lensRadius" ? 0.9 : 1.4);
+        coeffs.add("minimumDistance", key == "minimumDistance" ? 0.0 : 1e-7);
+        dict.add("RongHorioCoeffs", coeffs);
+        directConduction::New(dict);
+        indirectConduction::New(dict);
+        return 0;
+    }
+
+    Info().precision(15);
+    const scalar r = 5e-4;
+
+    // Contact radii
+    for (const scalar f : {0.002, 0.02, 0.2})
+    {
+        const scalar d = f*r;
+        check
+        (
+            "wall contact radius at overlap " + Foam::name(f) + " r",
+            conductionGeometry::wallContactRadius(r, d),
+            std::sqrt(d*(2*r - d)),
+            1e-12
+        );
+        check
+        (
+            "contact radius of two equal spheres at overlap "
+          + Foam::name(f) + " r",
+            conductionGeometry::pairContactRadius(r, r, d),
+            std::sqrt(r*d - d*d/4),
+            1e-12
+        );
+        check
+        (
+            "contact radius against a sphere 1e6 times larger, overlap "
+          + Foam::name(f) + " r",
+            conductionGeometry::pairContactRadius(r, 1e6*r, d),
+            conductionGeometry::wallContactRadius(r, d),
+            1e-5
+        );
+    }
+    check("wall contact radius at zero overlap", conductionGeometry::wallContactRadius(r, 0), 0, 0);
+    check("pair contact radius at a gap", conductionGeometry::pairContactRadius(r, r, -1e-6), 0, 0);
+
+    // Batchelor-O'Brien, App. B: glass (k 1.4, Y 5 MPa, Y_0 60 GPa, nu
+    // 0.22) on aluminium (k 238, Y 5 MPa, Y_0 69 GPa, nu 0.34)
+    {
+        dictionary dict;
+        dict.add("direct", "BatchelorOBrien");
+        autoPtr<directConduction> law(directConduction::New(dict));
+        const scalar YStar = 1/((1 - sqr(0.22))/5e6 + (1 - sqr(0.34))/5e6);
+        const scalar YStar0 = 1/((1 - sqr(0.22))/60e9 + (1 - sqr(0.34))/69e9);
+        const scalar c = conductionGeometry::overlapFactor(YStar, YStar0, 2.0/3.0);
+        check("App. B thermal overlap factor c", c, 0.0018270817509934208, 1e-12);
+        const scalar reference[][2] =
+        {
+            {0.002, 7.5252239873930473e-06},
+            {0.005, 1.1898407546962349e-05},
+            {0.01, 1.6826850893209107e-05},
+            {0.02, 2.3796652047396675e-05}
+        };
+        for (const auto& ref : reference)
+        {
+            const scalar Rc =
+                conductionGeometry::wallContactRadius(r, c*ref[0]*r);
+            check
+            (
+                "Batchelor-O'Brien glass on aluminium, overlap "
+              + Foam::name(ref[0]) + " r_p [W/K]",
+                law->conductance(1.4, 238, Rc),
+                ref[1],
+                1e-12
+            );
+        }
+    }
+
+    // Rong-Horio against a quadrature of eq 4.31
+    {
+        dictionary dict;
+        dict.add("indirect", "RongHorio");
+        dictionary coeffs;
+        coeffs.add("lensRadius", 1.4);
+        coeffs.add("minimumDistance", 1e-7);
+        dict.add("RongHorioCoeffs", coeffs);
+        autoPtr<indirectConduction> base(indirectConduction::New(dict));
+        const auto& law =
+            dynamic_cast<const indirectConductions::RongHorio&>(base());
+        const scalar s = law.minimumDistance();
+        const scalar rLens = law.lensRadius()*r;
+
+        auto quadrature = [&](const scalar gap)
+        {
+            const scalar a = r + gap;
+            if (!(a < rLens))
+            {
+                return scalar(0);
+            }
+            const scalar rOut = min(std::sqrt(rLens*rLens - a*a), r);
+            const scalar rIn = gap < 0 ? std::sqrt(r*r - a*a) : 0;
+            const scalar h = a - s;
+            const scalar rs =
+                gap < s ? min(h > 0 ? std::sqrt(r*r - h*h) : r, rOut) : rIn;
+            return
+                simpson(r, gap, s, rIn, max(rs, rIn), 20000)
+              + simpson(r, gap, s, max(rs, rIn), rOut, 200000);
+        };
+
+        const scalar gaps[][2] =
+        {
+            {0.3*r, 2}, {0.05*r, 2}, {0.002*r, 2}, {2e-7, 2},
+            {5e-8, 3}, {0, 4},
+            {-1e-4*r, 5}, {-0.002*r, 5}, {-0.02*r, 5}, {-0.05*r, 5}
+        };
+        for (const auto& g : gaps)
+        {
+            check
+            (
+                "Rong-Horio case " + Foam::name(label(g[1])) + ", gap "
+              + Foam::name(g[0]) + " m: closed form against quadrature",
+                law.wallIntegral(r, g[0]),
+                quadrature(g[0]),
+                1e-8
+            );
+        }
+        check("Rong-Horio case 1, gap 0.4 r_p", law.wallIntegral(r, 0.4*r), 0, 0);
+        check("Rong-Horio case 1, gap 0.5 r_p", law.wallIntegral(r, 0.5*r), 0, 0);
+        // Either side of the case boundaries by 1e-17 m: the integral's
+        // slope there (about a/gap) moves it by ~1e-11 relative
+        const scalar eps = 1e-17;
+        check
+        (
+            "Rong-Horio continuous at gap = s (case 2 | 3)",
+            law.wallIntegral(r, s - eps), law.wallIntegral(r, s + eps), 1e-9
+        );
+        check
+        (
+            "Rong-Horio continuous at gap = 0 (case 4 | 5)",
+            law.wallIntegral(r, -eps), law.wallIntegral(r, eps), 1e-9
+        );
+        check
+        (
+            "Rong-Horio conductance = 2 pi k_f x integral",
+            law.wallConductance(0.026, r, 0.002*r),
+            2*constant::mathematical::pi*0.026*law.wallIntegral(r, 0.002*r),
+            1e-14
+        );
+
+        // For the record: App. B's time constants m c_p/G of the 1 mm
+        // glass particle through N2 (k_f 0.026)
+        const scalar mcp = 2500*constant::mathematical::pi/6*pow3(2*r)*840;
+        for (const scalar f : {0.02, 0.002, 0.0, -0.002, -0.02})
+        {
+            Info<< "for the record: App. B indirect, gap " << f
+                << " r_p: m c_p/G = "
+                << mcp/law.wallConductance(0.026, r, f*r) << " s" << nl;
+        }
+    }
+
+    Info<< nl << (nFailed ? "FAILED: " : "passed: ") << nFailed
+        << " failed check(s)" << endl;
+    return nFailed ? 1 : 0;
+}
