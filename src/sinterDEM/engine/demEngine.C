@@ -112,6 +112,10 @@ Foam::demEngine::demEngine
     law_(contactLaw::New(dict, materials_, coarseGrainFactor, slots_)),
     cohesion_(cohesionModel::New(dict, law_(), coarseGrainFactor, slots_)),
     kernel_(contactKernel::New(law_(), cohesion_(), durationSlot_)),
+    conduction_
+    (
+        dict, materials_, law_->thermalOverlapExponent(), coarseGrainFactor
+    ),
     time_(0),
     skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
     skin_(0),
@@ -536,7 +540,7 @@ void Foam::demEngine::rebuild()
 
     // Wall contacts of local particles, states by face centre
     wallContacts_.clearWithRoom(label(1.05*lastWalls_) + 64);
-    walls_.candidates(P, nL, skin_, wallContacts_);
+    walls_.candidates(P, nL, skin_ + conduction_.wallRange(rMax), wallContacts_);
     law_->setWallCoefficients(P, walls_, wallContacts_);
 
     groupByParticle(pendingWallParticle_, nL, start, sorted);
@@ -598,6 +602,18 @@ bool Foam::demEngine::listsExpired() const
 
 void Foam::demEngine::checkWallTemperature() const
 {
+    if
+    (
+        conduction_.active()
+     && walls_.size()
+     && walls_.temperature().size() != walls_.size()
+    )
+    {
+        FatalErrorInFunction
+            << "The contact conduction takes wall contacts at the wall"
+               " faces' temperature, but the wall faces have none"
+            << exit(FatalError);
+    }
     if
     (
         cohesion_->needsWallTemperature()
@@ -774,9 +790,10 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 
         if (halo_.valid())
         {
-            // Ghosts at the new positions, then a rebuild everywhere if any
-            // processor needs one (the ghosts are chosen again with it)
-            halo_->update(P, nL);
+            // Ghosts at the new positions (and temperatures, with
+            // conduction), then a rebuild everywhere if any processor needs
+            // one (the ghosts are chosen again with it)
+            halo_->update(P, nL, conduction_.active());
             reduce(expired, orOp<bool>());
         }
         if (expired)
@@ -788,6 +805,18 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
         time_ += deltaT;
         kernel_->pairs(P, pairs_, deltaT, time_);
         kernel_->walls(P, wallContacts_, walls_, deltaT, time_);
+
+        if (conduction_.active())
+        {
+            scalar* __restrict__ Q = P.heatFlow.data();
+            for (label i = 0; i < P.size(); ++i)
+            {
+                Q[i] = 0;
+            }
+            conduction_.pairs(P, pairs_, Q);
+            conduction_.walls(P, wallContacts_, walls_, Q);
+            conduction_.heat(P, nL, Q, deltaT);
+        }
     }
 
     // The closing half-kick; the forces stay for the next opening one

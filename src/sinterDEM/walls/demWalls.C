@@ -291,7 +291,9 @@ void Foam::demWalls::update
             }
             else
             {
-                contacts.overlap[k] = 0;
+                // No contact: the gap of a face the particle lies over
+                // (indirect conduction), none through an edge or corner
+                contacts.overlap[k] = interior[k - s] ? r - dist : -GREAT;
             }
         }
 

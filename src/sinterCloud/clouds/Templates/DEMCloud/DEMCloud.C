@@ -214,6 +214,13 @@ void Foam::DEMCloud<CloudType>::motion
     demParticles& P = engine.particles();
     const label nLocal = engine.nLocal();
 
+    // The gas conductivity, for the indirect conduction to walls
+    tmp<volScalarField> tkappa;
+    if (engine.conduction().needsGasConductivity())
+    {
+        tkappa = this->thermo().thermo().kappa();
+    }
+
     // 2. Fluid forces and heat, once per parcel, at the start position
     sourceCell_.setSize(nLocal);
     heatFraction_.setSize(nLocal);
@@ -248,7 +255,6 @@ void Foam::DEMCloud<CloudType>::motion
         massChecked_ = true;
 
         scalar dhsTrans, hAdt;
-        const scalar T0 = p.T();
         p.T() = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
         const scalar mCp = m*p.Cp();
         const scalar fraction =
@@ -269,7 +275,13 @@ void Foam::DEMCloud<CloudType>::motion
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();
-        P.temperature[n] = T0;
+        // After the exchange with the gas: the engine's conduction (and
+        // the cohesion) start from it
+        P.temperature[n] = p.T();
+        if (tkappa.valid())
+        {
+            P.gasConductivity[n] = tkappa()[celli];
+        }
         sourceCell_[n] = celli;
         heatFraction_[n] = fraction;
     }
@@ -296,7 +308,9 @@ void Foam::DEMCloud<CloudType>::motion
         heatFraction_.transfer(fraction);
     }
 
-    // 4. Results onto the parcels; the gas loses the drag impulse
+    // 4. Results onto the parcels (temperatures too, with conduction); the
+    // gas loses the drag impulse
+    const bool conducting = engine.conduction().active();
     for (parcelType& p : cloud)
     {
         const label n = p.demIndex();
@@ -306,6 +320,10 @@ void Foam::DEMCloud<CloudType>::motion
         }
         p.displacement() = P.position[n] - p.position();
         p.U() = P.velocity[n];
+        if (conducting)
+        {
+            p.T() = P.temperature[n];
+        }
     }
 
     // A time to be written: the lists are built again from the written

@@ -275,7 +275,7 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
 template<class CloudType>
 void Foam::DEMCollision<CloudType>::collide(const scalar dt)
 {
-    if (engine_.cohesion().active())
+    if (engine_.cohesion().active() || engine_.conduction().active())
     {
         setWallTemperature();
     }

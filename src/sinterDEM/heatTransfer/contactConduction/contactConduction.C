@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "contactConduction.H"
+#include "conductionGeometry.H"
+
+namespace
+{
+
+Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
+{
+    using namespace Foam;
+    const scalar v = dict.get<scalar>(key);
+    if (!(v > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " in " << dict.name()
+            << " must be positive, not " << v << exit(FatalIOError);
+    }
+    return v;
+}
+
+const Foam::dictionary& conductionDict(const Foam::dictionary& engineDict)
+{
+    return engineDict.found("conduction")
+        ? engineDict.subDict("conduction")
+        : Foam::dictionary::null;
+}
+
+Foam::dictionary noneDict()
+{
+    Foam::dictionary d;
+    d.add("direct", "none");
+    d.add("indirect", "none");
+    return d;
+}
+
+} // End anonymous namespace
+
+
+Foam::contactConduction::contactConduction
+(
+    const dictionary& engineDict,
+    const contactMaterials& materials,
+    const scalar overlapExponent,
+    const scalar coarseGrainFactor
+)
+:
+    direct_
+    (
+        directConduction::New
+        (
+            engineDict.found("conduction")
+          ? conductionDict(engineDict) : noneDict()
+        )
+    ),
+    indirect_
+    (
+        indirectConduction::New
+        (
+            engineDict.found("conduction")
+          ? conductionDict(engineDict) : noneDict()
+        )
+    ),
+    cp_(0),
+    gPP_(0),
+    gPW_(materials.nWalls(), scalar(0)),
+    cPP_(1),
+    cPW_(materials.nWalls(), scalar(1))
+{
+    if (!active())
+    {
+        return;
+    }
+
+    const dictionary& dict = conductionDict(engineDict);
+    if (coarseGrainFactor != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "conduction in " << dict.name() << " with coarseGrainFactor "
+            << coarseGrainFactor << ": the coarse-grain law of the contact"
+               " conduction is not implemented yet; use K = 1 or no"
+               " conduction" << exit(FatalIOError);
+    }
+
+    const dictionary& pDict = materials.particleDict();
+    cp_ = readPositive(pDict, "specificHeat");
+    const scalar kP = readPositive(pDict, "thermalConductivity");
+
+    // g = G/R_c of the direct law for each pair of materials
+    gPP_ = direct_->conductance(kP, kP, 1);
+    const contactMaterial& p = materials.particle();
+    cPP_ =
+        conductionGeometry::overlapFactor
+        (
+            p.effectiveModulus(p), p.effectiveRealModulus(p), overlapExponent
+        );
+    for (label m = 0; m < materials.nWalls(); ++m)
+    {
+        const dictionary& wDict =
+            materials.dict().subDict(materials.wallNames()[m]);
+        const scalar kW = readPositive(wDict, "thermalConductivity");
+        gPW_[m] = direct_->conductance(kP, kW, 1);
+        const contactMaterial& w = materials.wall(m);
+        cPW_[m] =
+            conductionGeometry::overlapFactor
+            (
+                p.effectiveModulus(w), p.effectiveRealModulus(w),
+                overlapExponent
+            );
+    }
+}
+
+
+void Foam::contactConduction::pairs
+(
+    const demParticles& P,
+    const contactList& C,
+    scalar* Q
+) const
+{
+    if (!direct_->active())
+    {
+        return;
+    }
+
+    const vector* __restrict__ x = P.position.cdata();
+    const scalar* __restrict__ r = P.radius.cdata();
+    const scalar* __restrict__ T = P.temperature.cdata();
+    const label* __restrict__ first = C.first.cdata();
+    const label* __restrict__ second = C.second.cdata();
+
+    const label n = C.size();
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = first[k];
+        const label j = second[k];
+        const scalar rSum = r[i] + r[j];
+        const scalar d2 = magSqr(x[j] - x[i]);
+        if (d2 < rSum*rSum)
+        {
+            const scalar overlap = rSum - std::sqrt(d2);
+            const scalar Rc =
+                conductionGeometry::pairContactRadius(r[i], r[j], cPP_*overlap);
+            const scalar q = gPP_*Rc*(T[j] - T[i]);
+            Q[i] += q;
+            Q[j] -= q;
+        }
+    }
+}
+
+
+void Foam::contactConduction::walls
+(
+    const demParticles& P,
+    const contactList& C,
+    const demWalls& walls,
+    scalar* Q
+) const
+{
+    const scalar* __restrict__ r = P.radius.cdata();
+    const scalar* __restrict__ T = P.temperature.cdata();
+    const scalar* __restrict__ kf = P.gasConductivity.cdata();
+    const label* __restrict__ first = C.first.cdata();
+    const label* __restrict__ face = C.second.cdata();
+    const scalar* __restrict__ overlap = C.overlap.cdata();
+    const scalarField& Tw = walls.temperature();
+    const labelList& material = walls.materials();
+    const bool direct = direct_->active();
+    const bool indirect = indirect_->active();
+
+    const label n = C.size();
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = first[k];
+        const label m = material[face[k]];
+        const scalar delta = cPW_[m]*max(overlap[k], scalar(0));
+        scalar G = 0;
+        if (direct && delta > 0)
+        {
+            G += gPW_[m]*conductionGeometry::wallContactRadius(r[i], delta);
+        }
+        if (indirect)
+        {
+            // The gap; in contact, the thermal overlap (case 5)
+            const scalar gap = overlap[k] > 0 ? -delta : -overlap[k];
+            G += indirect_->wallConductance(kf[i], r[i], gap);
+        }
+        Q[i] += G*(Tw[face[k]] - T[i]);
+    }
+}
+
+
+void Foam::contactConduction::heat
+(
+    demParticles& P,
+    const label n,
+    const scalar* Q,
+    const scalar deltaT
+) const
+{
+    scalar* __restrict__ T = P.temperature.data();
+    const scalar* __restrict__ invM = P.invMass.cdata();
+    const scalar f = deltaT/cp_;
+    for (label i = 0; i < n; ++i)
+    {
+        T[i] += f*invM[i]*Q[i];
+    }
+}
