@@ -62,19 +62,24 @@ check(max(pairs) > 0 and max(walls) > 0, 'contacts of both kinds occurred')
 # 2. Positions and velocities at 0.02 s, parcels matched by nearest position
 xs, xp = positions('serial', 0.02), positions('parallel', 0.02)
 us, up = rows('serial', 0.02, 'U'), rows('parallel', 0.02, 'U')
+Ts, Tp = rows('serial', 0.02, 'T'), rows('parallel', 0.02, 'T')
 check(len(xs) == len(xp) == 48, f'48 beads in both runs ({len(xs)}, {len(xp)})')
 used = set()
-dx = du = 0.0
-for a, ua in zip(xs, us):
+dx = du = dT = 0.0
+for a, ua, Ta in zip(xs, us, Ts):
     k = min(range(len(xp)), key=lambda k: math.dist(a, xp[k]))
     used.add(k)
     dx = max(dx, math.dist(a, xp[k]))
     du = max(du, math.dist(ua, up[k]))
+    dT = max(dT, abs(Ta[0] - Tp[k][0]))
 check(len(used) == len(xs), 'one-to-one match of the beads')
 check(dx <= POSITION_TOL, f'largest position difference {dx:.3g} m '
       f'(tolerance {POSITION_TOL:g} m)')
 check(du <= VELOCITY_TOL, f'largest velocity difference {du:.3g} m/s '
       f'(tolerance {VELOCITY_TOL:g} m/s)')
+check(dT <= 1e-8, f'largest temperature difference {dT:.3g} K '
+      f'(tolerance 1e-8 K; bead temperatures {min(t[0] for t in Ts):.6g}'
+      f'..{max(t[0] for t in Ts):.6g} K)')
 
 # 3. decomposePar + reconstructPar keep every parcel field exactly
 fields = ['U', 'd', 'angularVelocity', 'contactForce', 'contactTorque',

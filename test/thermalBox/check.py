@@ -53,12 +53,17 @@ def main():
 
     rows = balance_rows(case)
     Hp0 = rows[0][1]
-    t, Hp, Hg, Hout, imbalance = rows[-1]
+    t, Hp, Hg, Hout, imbalance, Hwall = rows[-1]
     lost = Hp0 - Hp
     gained = Hg - rows[0][2]
     rel = abs(imbalance) / lost
     print(f"particles lost {lost:.6g} J; gas gained {gained:.6g} J; "
-          f"carried/conducted out {Hout:.6g} J")
+          f"carried/conducted out {Hout:.6g} J; walls gave the beads "
+          f"{Hwall:.6g} J")
+    if mode == 'balanceWithConduction' and not abs(Hwall) > 1e-3 * lost:
+        print("FAIL: the walls conducted under 0.1 % of the loss;"
+              " the conduction would go untested")
+        return 1
     print(f"imbalance {imbalance:.3e} J = {100*rel:.4f} % of the loss "
           f"(tolerance 0.5 %)")
     if lost <= 0.01 * Hp0:

@@ -27,6 +27,7 @@ Foam::functionObjects::enthalpyBalance::enthalpyBalance
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
     Hout_(0),
+    Hwall_(0),
     timeIndex_(-1),
     haveInitial_(false),
     Hp0_(0),
@@ -36,6 +37,7 @@ Foam::functionObjects::enthalpyBalance::enthalpyBalance
 
     // Carried over from the run this one restarts
     Hout_ = getProperty<scalar>("Hout", 0);
+    Hwall_ = getProperty<scalar>("Hwall", 0);
     haveInitial_ = getProperty<bool>("haveInitial", false);
     Hp0_ = getProperty<scalar>("Hp0", 0);
     Hg0_ = getProperty<scalar>("Hg0", 0);
@@ -48,6 +50,7 @@ Foam::functionObjects::enthalpyBalance::enthalpyBalance
         writeTabbed(file(), "H_g");
         writeTabbed(file(), "H_out");
         writeTabbed(file(), "imbalance");
+        writeTabbed(file(), "H_wall");
         file() << endl;
     }
 }
@@ -140,6 +143,15 @@ bool Foam::functionObjects::enthalpyBalance::execute()
         if (haveInitial_)
         {
             Hout_ += outflowRate()*time.deltaTValue();
+            if
+            (
+                const basicSinterCloud* cloudPtr =
+                    findSinterCloud(mesh_, cloudName_)
+            )
+            {
+                Hwall_ +=
+                    returnReduce(cloudPtr->conductedWallHeat(), sumOp<scalar>());
+            }
         }
     }
     return true;
@@ -158,6 +170,7 @@ bool Foam::functionObjects::enthalpyBalance::write()
     }
 
     setProperty("Hout", Hout_);
+    setProperty("Hwall", Hwall_);
     setProperty("haveInitial", haveInitial_);
     setProperty("Hp0", Hp0_);
     setProperty("Hg0", Hg0_);
@@ -166,7 +179,8 @@ bool Foam::functionObjects::enthalpyBalance::write()
     {
         file()
             << mesh_.time().timeName() << tab << Hp << tab << Hg << tab
-            << Hout_ << tab << (Hp - Hp0_) + (Hg - Hg0_) + Hout_ << endl;
+            << Hout_ << tab << (Hp - Hp0_) + (Hg - Hg0_) + Hout_ - Hwall_
+            << tab << Hwall_ << endl;
     }
     return true;
 }

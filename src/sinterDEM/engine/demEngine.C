@@ -125,6 +125,7 @@ Foam::demEngine::demEngine
     lastPairs_(0),
     lastWalls_(0),
     nBuilds_(0),
+    wallHeat_(0),
     spatialSort_(false),
     movedValid_(false),
     recordIndexValid_(false)
@@ -734,6 +735,7 @@ void Foam::demEngine::beginStep()
         halo_->update(particles_, nLocal_, true);
     }
     rebuildRequested_ = false;
+    wallHeat_ = 0;
 
     vector* __restrict__ Jd = particles_.dragImpulse.data();
     for (label i = 0; i < nLocal_; ++i)
@@ -814,7 +816,8 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
                 Q[i] = 0;
             }
             conduction_.pairs(P, pairs_, Q);
-            conduction_.walls(P, wallContacts_, walls_, Q);
+            wallHeat_ +=
+                deltaT*conduction_.walls(P, wallContacts_, walls_, Q);
             conduction_.heat(P, nL, Q, deltaT);
         }
     }

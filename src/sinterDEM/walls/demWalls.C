@@ -312,3 +312,15 @@ void Foam::demWalls::setTemperature(const scalarField& T)
     }
     temperature_ = T;
 }
+
+
+void Foam::demWalls::setConducting(const boolList& conducting)
+{
+    if (conducting.size() != faces_.size())
+    {
+        FatalErrorInFunction
+            << conducting.size() << " conduction flags for " << faces_.size()
+            << " wall faces" << exit(FatalError);
+    }
+    conducting_ = conducting;
+}

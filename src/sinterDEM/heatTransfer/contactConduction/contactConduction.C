@@ -150,7 +150,7 @@ void Foam::contactConduction::pairs
 }
 
 
-void Foam::contactConduction::walls
+Foam::scalar Foam::contactConduction::walls
 (
     const demParticles& P,
     const contactList& C,
@@ -166,12 +166,19 @@ void Foam::contactConduction::walls
     const scalar* __restrict__ overlap = C.overlap.cdata();
     const scalarField& Tw = walls.temperature();
     const labelList& material = walls.materials();
+    const boolList& conducting = walls.conducting();
+    const bool all = conducting.empty();
     const bool direct = direct_->active();
     const bool indirect = indirect_->active();
 
+    scalar total = 0;
     const label n = C.size();
     for (label k = 0; k < n; ++k)
     {
+        if (!all && !conducting[face[k]])
+        {
+            continue;
+        }
         const label i = first[k];
         const label m = material[face[k]];
         const scalar delta = cPW_[m]*max(overlap[k], scalar(0));
@@ -186,8 +193,11 @@ void Foam::contactConduction::walls
             const scalar gap = overlap[k] > 0 ? -delta : -overlap[k];
             G += indirect_->wallConductance(kf[i], r[i], gap);
         }
-        Q[i] += G*(Tw[face[k]] - T[i]);
+        const scalar q = G*(Tw[face[k]] - T[i]);
+        Q[i] += q;
+        total += q;
     }
+    return total;
 }
 
 

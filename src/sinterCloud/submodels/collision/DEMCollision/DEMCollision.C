@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "DEMCollision.H"
+#include "fixedValueFvPatchFields.H"
 #include "demHalo.H"
 #include "coarseGrainFactor.H"
 #include "wallPolyPatch.H"
@@ -206,6 +207,26 @@ Foam::DEMCollision<CloudType>::DEMCollision
 
     // The parcels follow the engine's particles wherever it sorts them
     engine_.setSpatialSort(true);
+
+    if (engine_.conduction().active())
+    {
+        const fvMesh& mesh = owner.mesh();
+        const volScalarField* T = mesh.findObject<volScalarField>("T");
+        Info<< "    contact conduction to the wall patches of fixed"
+               " temperature:";
+        for (const label patchi : wallPatches_)
+        {
+            if
+            (
+                T
+             && isA<fixedValueFvPatchScalarField>(T->boundaryField()[patchi])
+            )
+            {
+                Info<< ' ' << mesh.boundaryMesh()[patchi].name();
+            }
+        }
+        Info<< " (the others are adiabatic)" << endl;
+    }
 }
 
 
@@ -219,16 +240,23 @@ void Foam::DEMCollision<CloudType>::setWallTemperature()
         return;
     }
 
+    // The faces' temperature; a face conducts heat (a reservoir) where the
+    // gas temperature's condition is a fixed value, not at an adiabatic or
+    // mixed one (an outlet's inletOutlet, the thermal wall condition)
     scalarField Tw(engine_.walls().size());
+    boolList conducting(Tw.size());
     label n = 0;
     for (const label patchi : wallPatches_)
     {
-        for (const scalar t : T->boundaryField()[patchi])
+        const fvPatchScalarField& Tp = T->boundaryField()[patchi];
+        for (const scalar t : Tp)
         {
+            conducting[n] = isA<fixedValueFvPatchScalarField>(Tp);
             Tw[n++] = t;
         }
     }
     engine_.setWallTemperature(Tw);
+    engine_.setWallConducting(conducting);
 }
 
 
