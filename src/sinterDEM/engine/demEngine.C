@@ -467,14 +467,17 @@ void Foam::demEngine::rebuild()
     const scalar rMax = maxRadius();
     skin_ = skinFraction_*2*rMax;
 
+    // The pair lists reach the skin, and with indirect conduction the lens
+    const scalar reach = skin_ + conduction_.pairRange(rMax);
+
     if (spatialSort_ && rMax > 0)
     {
-        sortLocals(2*rMax + skin_);
+        sortLocals(2*rMax + reach);
     }
 
     if (halo_.valid())
     {
-        halo_->select(P, nL, 2*rMax + skin_);
+        halo_->select(P, nL, 2*rMax + reach);
     }
 
     if (!(rMax > 0))
@@ -497,14 +500,14 @@ void Foam::demEngine::rebuild()
     // Pairs (of two ghosts: their owners' business)
     // Room for the pairs: as many as last time and a little more, or, the
     // first time, exactly as many (counted)
-    bins_.build(P.position, 2*rMax + skin_);
+    bins_.build(P.position, 2*rMax + reach);
     pairs_.clearWithRoom
     (
         lastPairs_ > 0
       ? label(1.05*lastPairs_) + 64
-      : bins_.countPairs(P, nL, skin_)
+      : bins_.countPairs(P, nL, reach)
     );
-    bins_.pairs(P, nL, skin_, pairs_);
+    bins_.pairs(P, nL, reach, pairs_);
     law_->setPairCoefficients(P, pairs_);
 
     // A pair's state is kept from the side of its first particle; a state

@@ -90,7 +90,7 @@ void Foam::demHalo::select
             // 64-bit integers as labels)
             os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
                 << P.radius[i] << P.invMass[i] << P.invInertia[i]
-                << P.temperature[i]
+                << P.temperature[i] << P.gasConductivity[i]
                 << identityProc(P.identity[i]) << identityIndex(P.identity[i]);
         }
     }
@@ -110,7 +110,7 @@ void Foam::demHalo::select
             label proc, id;
             is  >> P.position[i] >> P.velocity[i] >> P.angularVelocity[i]
                 >> P.radius[i] >> P.invMass[i] >> P.invInertia[i]
-                >> P.temperature[i] >> proc >> id;
+                >> P.temperature[i] >> P.gasConductivity[i] >> proc >> id;
             P.identity[i] = makeIdentity(proc, id);
         }
     }
@@ -124,8 +124,9 @@ void Foam::demHalo::update
     const bool withTemperature
 ) const
 {
-    // Scalars per ghost: position, velocity, angular velocity (, T)
-    const label nv = withTemperature ? 10 : 9;
+    // Scalars per ghost: position, velocity, angular velocity (, T and
+    // the gas conductivity)
+    const label nv = withTemperature ? 11 : 9;
 
     label nSend = 0;
     for (const labelList& send : sendMap_)
@@ -178,6 +179,7 @@ void Foam::demHalo::update
             if (withTemperature)
             {
                 b[offset++] = P.temperature[i];
+                b[offset++] = P.gasConductivity[i];
             }
         }
         if (offset > start)
@@ -206,6 +208,7 @@ void Foam::demHalo::update
         if (withTemperature)
         {
             P.temperature[g] = r[offset + 9];
+            P.gasConductivity[g] = r[offset + 10];
         }
         offset += nv;
     }

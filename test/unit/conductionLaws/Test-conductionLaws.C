@@ -19,7 +19,9 @@ Description
     - Rong-Horio (eq 4.31-4.36): the closed form against a quadrature of
       eq 4.31 (Simpson, split at r_s) in all five cases of Fig 4.2,
       relative 1e-8; zero outside the lens; continuous where the cases
-      meet (gap = s, gap = 0), relative 1e-9.
+      meet (gap = s, gap = 0), relative 1e-9; two equal particles against
+      a quadrature of the gas between them (2 l thick, at least s),
+      relative 1e-8, unequal ones as the equal pair of the same r*.
 
     Run with -bad KEY to check a bad-input error instead (direct,
     lensRadius, minimumDistance).
@@ -243,6 +245,47 @@ int main(int argc, char *argv[])
             law.wallConductance(0.026, r, 0.002*r),
             2*constant::mathematical::pi*0.026*law.wallIntegral(r, 0.002*r),
             1e-14
+        );
+
+        // Two equal spheres at surface gap g: the gas between them at ring
+        // radius r is 2 l(r; g/2) thick, s the least: 2 pi k_f int r/max(2l,
+        // s) dr from r_in to r_out (of the mid plane at g/2)
+        auto pairQuadrature = [&](const scalar g)
+        {
+            const scalar a = r + 0.5*g;
+            if (!(a < rLens))
+            {
+                return scalar(0);
+            }
+            const scalar rOut = min(std::sqrt(rLens*rLens - a*a), r);
+            const scalar rIn = g < 0 ? std::sqrt(r*r - a*a) : 0;
+            // l = s/2 at r_s
+            const scalar h = a - 0.5*s;
+            const scalar rs =
+                0.5*g < 0.5*s ? min(h > 0 ? std::sqrt(r*r - h*h) : r, rOut) : rIn;
+            const scalar kf = 0.026;
+            return
+                2*constant::mathematical::pi*kf*0.5
+               *(
+                    simpson(r, 0.5*g, 0.5*s, rIn, max(rs, rIn), 20000)
+                  + simpson(r, 0.5*g, 0.5*s, max(rs, rIn), rOut, 200000)
+                );
+        };
+        for (const scalar g : {0.6*r, 0.05*r, 4e-7, 5e-8, 0.0, -0.002*r, -0.02*r})
+        {
+            check
+            (
+                "Rong-Horio, two equal particles at gap " + Foam::name(g)
+              + " m: against quadrature",
+                law.pairConductance(0.026, r, r, g), pairQuadrature(g), 1e-8
+            );
+        }
+        check("Rong-Horio, two particles beyond 2 (lens - 1) r", law.pairConductance(0.026, r, r, 0.81*r), 0, 0);
+        check
+        (
+            "Rong-Horio, unequal particles take the equal pair of r* = 2 ri rj/(ri + rj)",
+            law.pairConductance(0.026, r, 3*r, 0.01*r),
+            law.pairConductance(0.026, 1.5*r, 1.5*r, 0.01*r), 1e-14
         );
 
         // For the record: App. B's time constants m c_p/G of the 1 mm

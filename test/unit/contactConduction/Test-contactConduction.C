@@ -25,7 +25,9 @@ Description
     -case pairDirect    two such particles pressed together at overlaps
                         0.002-0.02 r_p, one at 363.15 K, one at 293.15 K:
                         their difference decays at 2 G/(m c_p) and their
-                        mean stays.
+                        mean stays;
+    -case pairIndirect  the two at surface gaps 0.4, 0.04, 0.0004 r_p
+                        through the gas lens (the lists reach the lens).
 
     G is computed here from eq 4.25-4.36 independently of the engine's
     code path (the laws' own functions are tested in Test-conductionLaws).
@@ -265,6 +267,50 @@ void casePairDirect()
 }
 
 
+void casePairIndirect()
+{
+    dictionary lawDict;
+    lawDict.add("indirect", "RongHorio");
+    dictionary coeffs;
+    coeffs.add("lensRadius", 1.4);
+    coeffs.add("minimumDistance", 1e-7);
+    lawDict.add("RongHorioCoeffs", coeffs);
+    const indirectConductions::RongHorio lens(lawDict);
+
+    // Surface gaps (in units of r): no contact, no force: they stay
+    for (const scalar f : {0.4, 0.04, 0.0004})
+    {
+        demEngine dem(settings("none", "RongHorio"), materials(), 1);
+        demParticles& P = dem.resetParticles();
+        const scalar half = r + 0.5*f*r;
+        P.append(point(-half, 0, 0), Zero, Zero, r, rho, 0);
+        P.append(point(half, 0, 0), Zero, Zero, r, rho, 1);
+        P.temperature[0] = T0;
+        P.temperature[1] = Tw;
+        P.gasConductivity[0] = kf;
+        P.gasConductivity[1] = kf;
+        holdStill(dem);
+
+        const scalar G = lens.pairConductance(kf, r, r, f*r);
+        Info<< "pair indirect, gap " << f << " r_p: G = " << G << " W/K"
+            << nl;
+        const scalar worst = runAgainst(dem, 2*G, 0.5*(T0 + Tw));
+        check
+        (
+            "indirect particle-particle, gap " + Foam::name(f)
+          + " r_p: largest difference from the exponential",
+            worst, 0, 1e-4
+        );
+        check
+        (
+            "  mean temperature conserved",
+            0.5*(dem.particles().temperature[0] + dem.particles().temperature[1]),
+            0.5*(T0 + Tw), 1e-14
+        );
+    }
+}
+
+
 void caseBadInput(const word& what)
 {
     if (what == "coarseGrained")
@@ -289,7 +335,7 @@ int main(int argc, char *argv[])
     argList::addNote("Contact conduction in the DEM engine against App. B");
     argList::noParallel();
     argList::noCheckProcessorDirectories();
-    argList::addOption("case", "name", "wallDirect|wallIndirect|pairDirect|badInput");
+    argList::addOption("case", "name", "wallDirect|wallIndirect|pairDirect|pairIndirect|badInput");
     argList::addOption("bad", "what", "with -case badInput: coarseGrained|noConductivity");
     argList args(argc, argv);
 
@@ -297,12 +343,13 @@ int main(int argc, char *argv[])
     if (which == "wallDirect") caseWall(true);
     else if (which == "wallIndirect") caseWall(false);
     else if (which == "pairDirect") casePairDirect();
+    else if (which == "pairIndirect") casePairIndirect();
     else if (which == "badInput") caseBadInput(args.get<word>("bad"));
     else
     {
         FatalErrorInFunction
             << "Unknown -case " << which
-            << ". Valid: wallDirect wallIndirect pairDirect badInput"
+            << ". Valid: wallDirect wallIndirect pairDirect pairIndirect badInput"
             << exit(FatalError);
     }
 

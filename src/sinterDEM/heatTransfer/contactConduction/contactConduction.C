@@ -119,7 +119,9 @@ void Foam::contactConduction::pairs
     scalar* Q
 ) const
 {
-    if (!direct_->active())
+    const bool direct = direct_->active();
+    const bool indirect = indirect_->active();
+    if (!direct && !indirect)
     {
         return;
     }
@@ -127,6 +129,7 @@ void Foam::contactConduction::pairs
     const vector* __restrict__ x = P.position.cdata();
     const scalar* __restrict__ r = P.radius.cdata();
     const scalar* __restrict__ T = P.temperature.cdata();
+    const scalar* __restrict__ kf = P.gasConductivity.cdata();
     const label* __restrict__ first = C.first.cdata();
     const label* __restrict__ second = C.second.cdata();
 
@@ -137,15 +140,31 @@ void Foam::contactConduction::pairs
         const label j = second[k];
         const scalar rSum = r[i] + r[j];
         const scalar d2 = magSqr(x[j] - x[i]);
-        if (d2 < rSum*rSum)
+        const bool touch = d2 < rSum*rSum;
+        if (!touch && !indirect)
         {
-            const scalar overlap = rSum - std::sqrt(d2);
-            const scalar Rc =
-                conductionGeometry::pairContactRadius(r[i], r[j], cPP_*overlap);
-            const scalar q = gPP_*Rc*(T[j] - T[i]);
-            Q[i] += q;
-            Q[j] -= q;
+            continue;
         }
+        const scalar overlap = rSum - std::sqrt(d2);
+        const scalar delta = cPP_*max(overlap, scalar(0));
+        scalar G = 0;
+        if (direct && touch)
+        {
+            G += gPP_*conductionGeometry::pairContactRadius(r[i], r[j], delta);
+        }
+        if (indirect)
+        {
+            // The gap; in contact, the thermal overlap (case 5)
+            const scalar gap = touch ? -delta : -overlap;
+            G +=
+                indirect_->pairConductance
+                (
+                    0.5*(kf[i] + kf[j]), r[i], r[j], gap
+                );
+        }
+        const scalar q = G*(T[j] - T[i]);
+        Q[i] += q;
+        Q[j] -= q;
     }
 }
 

@@ -73,13 +73,15 @@ Foam::indirectConductions::RongHorio::RongHorio(const dictionary& dict)
 }
 
 
-Foam::scalar Foam::indirectConductions::RongHorio::wallIntegral
+Foam::scalar Foam::indirectConductions::RongHorio::integral
 (
     const scalar r,
-    const scalar gap
-) const
+    const scalar gap,
+    const scalar lens,
+    const scalar s
+)
 {
-    const scalar rLens = lensRadius_*r;
+    const scalar rLens = lens*r;
     const scalar a = r + gap;
 
     // Case 1: the wall outside the lens; a centre on or behind the wall
@@ -92,16 +94,16 @@ Foam::scalar Foam::indirectConductions::RongHorio::wallIntegral
     const scalar rOut = min(std::sqrt(rLens*rLens - a*a), r);
     const scalar rIn = gap < 0 ? std::sqrt(r*r - a*a) : scalar(0);
 
-    if (!(gap < s_))
+    if (!(gap < s))
     {
         // Case 2: the gap is at least s everywhere
         return layerIntegral(r, a, 0, rOut);
     }
 
     // Cases 3, 4, 5: the layer is thinner than s out to r_s
-    const scalar h = a - s_;
+    const scalar h = a - s;
     const scalar rs = min(h > 0 ? std::sqrt(r*r - h*h) : r, rOut);
-    const scalar inner = rs > rIn ? (rs*rs - rIn*rIn)/(2*s_) : scalar(0);
+    const scalar inner = rs > rIn ? (rs*rs - rIn*rIn)/(2*s) : scalar(0);
     return inner + layerIntegral(r, a, max(rs, rIn), rOut);
 }
 
@@ -114,4 +116,20 @@ Foam::scalar Foam::indirectConductions::RongHorio::wallConductance
 ) const
 {
     return 2*constant::mathematical::pi*kf*wallIntegral(r, gap);
+}
+
+
+Foam::scalar Foam::indirectConductions::RongHorio::pairConductance
+(
+    const scalar kf,
+    const scalar ri,
+    const scalar rj,
+    const scalar gap
+) const
+{
+    // Each sphere to the mid plane at half the gap, in series
+    const scalar r = 2*ri*rj/(ri + rj);
+    return
+        constant::mathematical::pi*kf
+       *integral(r, 0.5*gap, lensRadius_, 0.5*s_);
 }
