@@ -27,14 +27,19 @@ Description
                         their difference decays at 2 G/(m c_p) and their
                         mean stays;
     -case pairIndirect  the two at surface gaps 0.4, 0.04, 0.0004 r_p
-                        through the gas lens (the lists reach the lens).
+                        through the gas lens (the lists reach the lens);
+    -case coarseGrain   a column of 16 primaries on a hot floor against 8
+                        parcels of K = 2, limited by the chain and by the
+                        floor: the heat taken in agrees within one primary
+                        layer's (the coarse-grain law of contactConduction:
+                        K between parcels, K^2 to a wall).
 
     G is computed here from eq 4.25-4.36 independently of the engine's
     code path (the laws' own functions are tested in Test-conductionLaws).
     The engine's explicit step (dt = 1e-4 s, 50,000 steps) differs from the
     exponential by about t dt G^2/(2 (m c_p)^2) of the difference: the
     tolerance is 1e-4 of it over 5 s.
-    -case badInput -bad coarseGrained|noConductivity: fatal errors.
+    -case badInput -bad noConductivity: a fatal error.
 */
 
 #include "argList.H"
@@ -78,7 +83,12 @@ dictionary settings(const word& direct, const word& indirect)
 }
 
 
-dictionary materials(const bool withConductivity = true)
+dictionary materials
+(
+    const bool withConductivity = true,
+    const scalar k = kp,
+    const scalar kWall = kw
+)
 {
     OStringStream os;
     os  << "glass { demYoungsModulus 5e6; youngsModulus 60e9;"
@@ -86,11 +96,11 @@ dictionary materials(const bool withConductivity = true)
         << ";";
     if (withConductivity)
     {
-        os << " thermalConductivity " << kp << ";";
+        os << " thermalConductivity " << k << ";";
     }
     os  << " }"
         << "aluminium { demYoungsModulus 5e6; youngsModulus 69e9;"
-        << " poissonsRatio 0.34; thermalConductivity " << kw << "; }"
+        << " poissonsRatio 0.34; thermalConductivity " << kWall << "; }"
         << "particle glass;"
         << "walls { \".*\" aluminium; }";
     IStringStream is(os.str());
@@ -311,13 +321,107 @@ void casePairIndirect()
 }
 
 
+//- Mean (T - T_0)/(T_w - T_0) of a column of particles on the hot floor
+//  (wall at Tw, particles at T0), every tenth of the run
+List<scalar> column
+(
+    const scalar K,
+    const label n,
+    const scalar overlap,
+    const word& indirect,
+    const scalar k,
+    const scalar kWall
+)
+{
+    demEngine dem
+    (
+        settings("BatchelorOBrien", indirect), materials(true, k, kWall), K
+    );
+    dem.setWalls(floor());
+    dem.setWallTemperature(scalarField(1, Tw));
+    demParticles& P = dem.resetParticles();
+    const scalar R = K*r;
+    const scalar d = K*overlap;
+    for (label i = 0; i < n; ++i)
+    {
+        P.append(point(0, 0, R - d + i*(2*R - d)), Zero, Zero, R, rho, i);
+        P.temperature[i] = T0;
+        P.gasConductivity[i] = kf;
+    }
+    holdStill(dem);
+
+    List<scalar> theta(10);
+    const label every = 10000;
+    for (label k = 0; k < 10; ++k)
+    {
+        dem.advance(1e-3, every);
+        scalar sum = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            sum += dem.particles().temperature[i];
+        }
+        theta[k] = (sum/n - T0)/(Tw - T0);
+    }
+    return theta;
+}
+
+
+//- The heat taken in by a column of 16 primaries and by 8 parcels of K = 2
+//  standing for K^2 such columns; true if within one primary layer's
+bool sameHeat
+(
+    const word& what,
+    const word& indirect,
+    const scalar k,
+    const scalar kWall
+)
+{
+    const label nPrimaries = 16;
+    const List<scalar> a = column(1, nPrimaries, 0.01*r, indirect, k, kWall);
+    const List<scalar> b = column(2, nPrimaries/2, 0.01*r, indirect, k, kWall);
+    scalar worst = 0;
+    forAll(a, i)
+    {
+        Info<< "    t " << 10*(i + 1) << " s: mean theta K = 1 " << a[i]
+            << ", K = 2 " << b[i] << nl;
+        worst = max(worst, mag(a[i] - b[i]));
+    }
+    // In primary layers: the column's heat is nPrimaries x theta layers
+    const scalar layers = nPrimaries*worst;
+    const bool ok = layers <= 1 && a.last() > 0.5 && b.last() > 0.5;
+    Info<< (ok ? "ok   " : "FAIL ") << what.c_str() << ": K = 2 against"
+        << " K = 1, largest difference of the heat taken in " << layers
+        << " primary layers (at most 1); taken in at the end "
+        << a.last() << ", " << b.last() << " (more than half)" << nl;
+    return ok;
+}
+
+
+void caseCoarseGrain()
+{
+    // Columns on the hot floor, overlaps 0.01 r (0.01 K r for the
+    // parcels). The parcel layer at the floor is K primary layers thick
+    // and is heated as one: the columns may differ by about one primary
+    // layer's heat, not more.
+    // 1. Limited by the chain (particles and floor of k = 200, direct and
+    //    through the gas lens): a parcel-parcel contact must conduct K
+    //    times a primary's
+    // 2. Limited by the floor (particles of k = 2000, floor of k = 20,
+    //    direct only: the column heats nearly uniformly): a parcel-floor
+    //    contact must conduct K^2 times a primary's (with K times, the
+    //    parcels fall behind by several primary layers)
+    const bool chain = sameHeat("chain-limited", "RongHorio", 200, 200);
+    const bool floor = sameHeat("floor-limited", "none", 2000, 20);
+    if (!chain || !floor)
+    {
+        ++unitTest::nFailed();
+    }
+}
+
+
 void caseBadInput(const word& what)
 {
-    if (what == "coarseGrained")
-    {
-        demEngine dem(settings("BatchelorOBrien", "none"), materials(), 2);
-    }
-    else if (what == "noConductivity")
+    if (what == "noConductivity")
     {
         demEngine dem(settings("BatchelorOBrien", "none"), materials(false), 1);
     }
@@ -335,8 +439,8 @@ int main(int argc, char *argv[])
     argList::addNote("Contact conduction in the DEM engine against App. B");
     argList::noParallel();
     argList::noCheckProcessorDirectories();
-    argList::addOption("case", "name", "wallDirect|wallIndirect|pairDirect|pairIndirect|badInput");
-    argList::addOption("bad", "what", "with -case badInput: coarseGrained|noConductivity");
+    argList::addOption("case", "name", "wallDirect|wallIndirect|pairDirect|pairIndirect|coarseGrain|badInput");
+    argList::addOption("bad", "what", "with -case badInput: noConductivity");
     argList args(argc, argv);
 
     const word which(args.get<word>("case"));
@@ -344,12 +448,13 @@ int main(int argc, char *argv[])
     else if (which == "wallIndirect") caseWall(false);
     else if (which == "pairDirect") casePairDirect();
     else if (which == "pairIndirect") casePairIndirect();
+    else if (which == "coarseGrain") caseCoarseGrain();
     else if (which == "badInput") caseBadInput(args.get<word>("bad"));
     else
     {
         FatalErrorInFunction
             << "Unknown -case " << which
-            << ". Valid: wallDirect wallIndirect pairDirect pairIndirect badInput"
+            << ". Valid: wallDirect wallIndirect pairDirect pairIndirect coarseGrain badInput"
             << exit(FatalError);
     }
 

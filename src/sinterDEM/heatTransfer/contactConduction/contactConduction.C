@@ -35,6 +35,29 @@ Foam::dictionary noneDict()
     return d;
 }
 
+//- The conduction dictionary with the lens law's minimum distance scaled
+//  by K (coarse graining: every length of a parcel contact scales)
+Foam::dictionary scaledDict
+(
+    const Foam::dictionary& engineDict,
+    const Foam::scalar K
+)
+{
+    using namespace Foam;
+    if (!engineDict.found("conduction"))
+    {
+        return noneDict();
+    }
+    dictionary d(engineDict.subDict("conduction"));
+    const word coeffs(d.lookupOrDefault<word>("indirect", "none") + "Coeffs");
+    if (K != 1 && d.isDict(coeffs) && d.subDict(coeffs).found("minimumDistance"))
+    {
+        dictionary& c = d.subDict(coeffs);
+        c.set("minimumDistance", K*c.get<scalar>("minimumDistance"));
+    }
+    return d;
+}
+
 } // End anonymous namespace
 
 
@@ -54,33 +77,17 @@ Foam::contactConduction::contactConduction
           ? conductionDict(engineDict) : noneDict()
         )
     ),
-    indirect_
-    (
-        indirectConduction::New
-        (
-            engineDict.found("conduction")
-          ? conductionDict(engineDict) : noneDict()
-        )
-    ),
+    indirect_(indirectConduction::New(scaledDict(engineDict, coarseGrainFactor))),
     cp_(0),
     gPP_(0),
     gPW_(materials.nWalls(), scalar(0)),
     cPP_(1),
-    cPW_(materials.nWalls(), scalar(1))
+    cPW_(materials.nWalls(), scalar(1)),
+    wallFactor_(coarseGrainFactor)
 {
     if (!active())
     {
         return;
-    }
-
-    const dictionary& dict = conductionDict(engineDict);
-    if (coarseGrainFactor != 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "conduction in " << dict.name() << " with coarseGrainFactor "
-            << coarseGrainFactor << ": the coarse-grain law of the contact"
-               " conduction is not implemented yet; use K = 1 or no"
-               " conduction" << exit(FatalIOError);
     }
 
     const dictionary& pDict = materials.particleDict();
@@ -212,7 +219,7 @@ Foam::scalar Foam::contactConduction::walls
             const scalar gap = overlap[k] > 0 ? -delta : -overlap[k];
             G += indirect_->wallConductance(kf[i], r[i], gap);
         }
-        const scalar q = G*(Tw[face[k]] - T[i]);
+        const scalar q = wallFactor_*G*(Tw[face[k]] - T[i]);
         Q[i] += q;
         total += q;
     }
