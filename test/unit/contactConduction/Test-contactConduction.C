@@ -50,6 +50,7 @@ Description
 #include "RongHorio.H"
 #include "effectiveProperties.H"
 #include "mathematicalConstants.H"
+#include "OFstream.H"
 
 using namespace Foam;
 
@@ -142,21 +143,53 @@ void holdStill(demEngine& dem)
 
 //- Run, comparing particle 0's (T - T_0)/(T_w - T_0) with the exponential
 //  of rate G/(m c_p) at 5 times; the largest difference
-scalar runAgainst(demEngine& dem, const scalar G, const scalar Tpartner)
+//- Where -write puts the histories of the wall cases (empty: no files)
+fileName writeDir;
+
+
+//- Run for endTime in steps of step, comparing particle 0's
+//  theta = (T - T_0)/(T_partner - T_0) with the exponential of rate
+//  G/(m c_p) at n times (written to writeDir/name.dat with -write); the
+//  largest difference
+scalar runAgainst
+(
+    demEngine& dem,
+    const scalar G,
+    const scalar Tpartner,
+    const word& name = word::null,
+    const scalar endTime = nSteps*dt,
+    const scalar step = dt,
+    const label n = 5
+)
 {
     const demParticles& P = dem.particles();
     const scalar rate = G/mcp();
-    scalar worst = 0;
-    const label every = nSteps/5;
-    for (label k = 1; k <= 5; ++k)
+    autoPtr<OFstream> os;
+    if (!writeDir.empty() && !name.empty())
     {
-        dem.advance(dt, every);
-        const scalar t = k*every*dt;
+        os.reset(new OFstream(writeDir/name + ".dat"));
+        os() << "# t [s]  theta simulated  theta analytic (G " << G
+             << " W/K, m c_p " << mcp() << " J/K)" << nl;
+        os() << 0 << ' ' << 0 << ' ' << 0 << nl;
+    }
+    scalar worst = 0;
+    const label every = label(endTime/step/n + 0.5);
+    for (label k = 1; k <= n; ++k)
+    {
+        dem.advance(step, every);
+        const scalar t = k*every*step;
         const scalar theta = (P.temperature[0] - T0)/(Tpartner - T0);
         const scalar exact = 1 - std::exp(-rate*t);
         worst = max(worst, mag(theta - exact));
-        Info<< "    t " << t << " s: theta " << theta << " (analytic "
-            << exact << ")" << nl;
+        if (os.valid())
+        {
+            os() << t << ' ' << theta << ' ' << exact << nl;
+        }
+        else
+        {
+            Info<< "    t " << t << " s: theta " << theta << " (analytic "
+                << exact << ")" << nl;
+        }
     }
     return worst;
 }
@@ -219,7 +252,16 @@ void caseWall(const bool direct)
         Info<< (direct ? "direct" : "indirect") << ", overlap " << f
             << " r_p: G = " << G << " W/K, m c_p/G = " << mcp()/G << " s"
             << nl;
-        const scalar worst = runAgainst(dem, G, Tw);
+        // The test: 5 s in steps of 1e-4 s; with -write, the histories of
+        // App. B's figures (300 s direct, 20 s indirect, same steps)
+        const word name
+        (
+            word(direct ? "wallDirect_" : "wallIndirect_") + Foam::name(f)
+        );
+        const scalar worst =
+            writeDir.empty()
+          ? runAgainst(dem, G, Tw)
+          : runAgainst(dem, G, Tw, name, direct ? 300 : 20, dt, 100);
         check
         (
             word(direct ? "direct" : "indirect") + " particle-wall, overlap "
@@ -441,9 +483,16 @@ int main(int argc, char *argv[])
     argList::noCheckProcessorDirectories();
     argList::addOption("case", "name", "wallDirect|wallIndirect|pairDirect|pairIndirect|coarseGrain|badInput");
     argList::addOption("bad", "what", "with -case badInput: noConductivity");
+    argList::addOption
+    (
+        "write", "dir",
+        "with -case wallDirect|wallIndirect: the histories of App. B's"
+        " figures into dir"
+    );
     argList args(argc, argv);
 
     const word which(args.get<word>("case"));
+    args.readIfPresent("write", writeDir);
     if (which == "wallDirect") caseWall(true);
     else if (which == "wallIndirect") caseWall(false);
     else if (which == "pairDirect") casePairDirect();
