@@ -64,13 +64,14 @@ def main():
         print("FAIL: the walls conducted under 0.1 % of the loss;"
               " the conduction would go untested")
         return 1
+    tol = 0.001 if mode == 'balanceWithConduction' else 0.005
     print(f"imbalance {imbalance:.3e} J = {100*rel:.4f} % of the loss "
-          f"(tolerance 0.5 %)")
+          f"(tolerance {100*tol:g} %)")
     if lost <= 0.01 * Hp0:
         print("FAIL: the beads lost under 1 % of their enthalpy;"
               " the balance would prove nothing")
         return 1
-    return 0 if rel <= 0.005 else 1
+    return 0 if rel <= tol else 1
 
 
 if __name__ == '__main__':

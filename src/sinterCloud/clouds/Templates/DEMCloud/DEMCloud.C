@@ -3,6 +3,23 @@
 
 #include "DEMCloud.H"
 #include "fvmSup.H"
+#include "diffusionSmoother.H"
+
+namespace Foam
+{
+class cloudCoupling;
+
+namespace DEMCloudDetail
+{
+    //- The smoother of the mesh's coupling (cloudCoupling includes the
+    //  cloud's headers: named here, defined where the cloud is used)
+    template<class Coupling = cloudCoupling>
+    const diffusionSmoother& smoother(const fvMesh& mesh)
+    {
+        return Coupling::New(mesh).smoother();
+    }
+}
+}
 
 template<class CloudType>
 Foam::DEMCloud<CloudType>::DEMCloud
@@ -224,6 +241,15 @@ void Foam::DEMCloud<CloudType>::motion
     // 2. Fluid forces and heat, once per parcel, at the start position
     sourceCell_.setSize(nLocal);
     heatFraction_.setSize(nLocal);
+    heatFrom_.setSize(nLocal);
+    if (implicitHeat)
+    {
+        // The gas temperature at the start, and the sum of m c_p f T_p of
+        // each cell's parcels
+        gasT0_ = this->thermo().thermo().T().primitiveField();
+        heatTarget_.setSize(this->mesh().nCells());
+        heatTarget_ = 0;
+    }
     for (parcelType& p : cloud)
     {
         const label n = p.demIndex();
@@ -254,18 +280,34 @@ void Foam::DEMCloud<CloudType>::motion
         }
         massChecked_ = true;
 
+        // Heat with the gas: explicit, the parcel's temperature now; implicit,
+        // its share f = 1 - exp(-h A dt/(m c_p)) and its temperature at
+        // the start, the parcel following the gathered gas temperature
+        // after the gas is solved (correctHeatExchange)
         scalar dhsTrans, hAdt;
-        p.T() = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
+        const scalar Tn = p.T();
+        const scalar Tconv = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
         const scalar mCp = m*p.Cp();
         const scalar fraction =
             implicitHeat && mCp > 0 ? -std::expm1(-hAdt/mCp) : 0;
+        if (!implicitHeat)
+        {
+            p.T() = Tconv;
+        }
 
         if (coupled)
         {
             this->UCoeff()[celli] += np*dt*Fcp.Sp();
             this->UTrans()[celli] -= np*dt*Fcp.Su();
-            this->hsTrans()[celli] += np*dhsTrans;
-            this->hsCoeff()[celli] += np*mCp*fraction;
+            if (implicitHeat)
+            {
+                this->hsCoeff()[celli] += np*mCp*fraction;
+                heatTarget_[celli] += np*mCp*fraction*Tn;
+            }
+            else
+            {
+                this->hsTrans()[celli] += np*dhsTrans;
+            }
         }
 
         // The position after tracking; the velocity too (a patch that is
@@ -275,8 +317,6 @@ void Foam::DEMCloud<CloudType>::motion
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();
-        // After the exchange with the gas: the engine's conduction (and
-        // the cohesion) start from it
         P.temperature[n] = p.T();
         if (tkappa.valid())
         {
@@ -284,6 +324,7 @@ void Foam::DEMCloud<CloudType>::motion
         }
         sourceCell_[n] = celli;
         heatFraction_[n] = fraction;
+        heatFrom_[n] = Tn;
     }
 
     // 3. The DEM sub-steps
@@ -299,13 +340,16 @@ void Foam::DEMCloud<CloudType>::motion
         }
         labelList cell(nLocal);
         scalarList fraction(nLocal);
+        scalarList from(nLocal);
         forAll(newIndex, k)
         {
             cell[newIndex[k]] = sourceCell_[k];
             fraction[newIndex[k]] = heatFraction_[k];
+            from[newIndex[k]] = heatFrom_[k];
         }
         sourceCell_.transfer(cell);
         heatFraction_.transfer(fraction);
+        heatFrom_.transfer(from);
     }
 
     // 4. Results onto the parcels (temperatures too, with conduction); the
@@ -354,8 +398,15 @@ void Foam::DEMCloud<CloudType>::parcelLeaves
 
     if (heatFraction_[k] != 0)
     {
-        this->hsCoeff()[sourceCell_[k]] -=
-            p.nParticle()*p.mass()*p.Cp()*heatFraction_[k];
+        // Leaving in the step: the exchange at the start's gas temperature,
+        // explicit, taken out of the implicit one
+        const label c = sourceCell_[k];
+        const scalar K = p.nParticle()*p.mass()*p.Cp()*heatFraction_[k];
+        const scalar dT = heatFraction_[k]*(gasT0_[c] - heatFrom_[k]);
+        p.T() += dT;
+        this->hsTrans()[c] -= p.nParticle()*p.mass()*p.Cp()*dT;
+        this->hsCoeff()[c] -= K;
+        heatTarget_[c] -= K*heatFrom_[k];
         heatFraction_[k] = 0;
     }
 
@@ -374,20 +425,47 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
     volScalarField& hs
 ) const
 {
-    // Explicit (or no heat transfer, hsCoeff zero): ThermoCloud's source
-    if (!heatImplicit())
+    tmp<fvScalarMatrix> tSh(new fvScalarMatrix(hs, dimEnergy/dimTime));
+    if (!this->solution().coupled())
     {
-        return CloudType::Sh(hs);
+        return tSh;
     }
 
-    const volScalarField::Internal Vdt
-    (
-        this->mesh().V()*this->db().time().deltaT()
-    );
-    const volScalarField Cp(this->thermo().thermo().Cp());
-    const volScalarField::Internal K(this->hsCoeff()/(Cp()*Vdt));
+    // Spread over the smoothing length as the momentum source is (the
+    // distribution D of eq 4.7): per volume and time, then smoothed
+    const diffusionSmoother& smoother = DEMCloudDetail::smoother(this->mesh());
+    const scalarField& V = this->mesh().V();
+    const scalar dt = this->db().time().deltaTValue();
 
-    return this->hsTrans()/Vdt - fvm::Sp(K, hs) + K*hs.oldTime()();
+    // Explicit exchange (and that of parcels that left in the step)
+    fvScalarMatrix& Sh = tSh.ref();
+    Sh.source() -=
+        V*smoother.smooth<scalar>(this->hsTrans().field()/(V*dt), "cloudHeat");
+
+    // Implicit: the gas of each cell towards its parcels,
+    //     B (T_p - T_g),  B T_p = S(sum m c_p f T_p/(V dt)),
+    //     B = S(sum m c_p f/(V dt)),
+    // T_g = T_g^0 + (h - h^0)/c_p: bounded by the parcels' temperatures
+    if (heatImplicit())
+    {
+        const volScalarField Cp(this->thermo().thermo().Cp());
+        const scalarField A
+        (
+            smoother.smooth<scalar>(heatTarget_/(V*dt), "cloudHeatTarget")
+        );
+        const scalarField B
+        (
+            smoother.smooth<scalar>
+            (
+                this->hsCoeff().field()/(V*dt), "cloudHeatCoeff"
+            )
+        );
+        const scalarField BbyCp(B/Cp.primitiveField());
+        Sh.diag() -= V*BbyCp;
+        Sh.source() -=
+            V*(A - B*gasT0_ + BbyCp*hs.oldTime().primitiveField());
+    }
+    return tSh;
 }
 
 
@@ -399,20 +477,31 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
         return;
     }
 
+    // Each parcel towards the gas temperature gathered over the smoothing
+    // length with the transpose of the spreading (the smoothing is its own
+    // transpose), T_g = T_g^0 + (h - h^0)/c_p as the gas took it: what
+    // the gas gave the parcels, exactly
+    const diffusionSmoother& smoother = DEMCloudDetail::smoother(this->mesh());
     const volScalarField& hs = this->thermo().thermo().he();
     const volScalarField Cp(this->thermo().thermo().Cp());
-    const scalarField dTg
+    const scalarField Tg
     (
-        (hs.primitiveField() - hs.oldTime().primitiveField())
-       /Cp.primitiveField()
+        smoother.smooth<scalar>
+        (
+            gasT0_
+          + (hs.primitiveField() - hs.oldTime().primitiveField())
+           /Cp.primitiveField(),
+            "cloudHeatGather"
+        )
     );
 
     for (parcelType& p : *this)
     {
         const label k = p.demIndex();
-        if (k >= 0 && k < heatFraction_.size())
+        if (k >= 0 && k < heatFraction_.size() && heatFraction_[k] != 0)
         {
-            p.T() += heatFraction_[k]*dTg[sourceCell_[k]];
+            // Conduction in the step moved p.T() on from heatFrom_
+            p.T() += heatFraction_[k]*(Tg[sourceCell_[k]] - heatFrom_[k]);
         }
     }
 }
