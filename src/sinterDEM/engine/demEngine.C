@@ -813,11 +813,9 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 
         if (conduction_.active())
         {
-            scalar* __restrict__ Q = P.heatFlow.data();
-            for (label i = 0; i < P.size(); ++i)
-            {
-                Q[i] = 0;
-            }
+            heatFlow_.resize(P.size());
+            heatFlow_ = 0;
+            scalar* __restrict__ Q = heatFlow_.data();
             conduction_.pairs(P, pairs_, Q);
             wallHeat_ +=
                 deltaT*conduction_.walls(P, wallContacts_, walls_, Q);

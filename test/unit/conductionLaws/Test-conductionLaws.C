@@ -28,6 +28,7 @@ Description
 */
 
 #include "argList.H"
+#include "unitCheck.H"
 #include "conductionGeometry.H"
 #include "directConduction.H"
 #include "RongHorio.H"
@@ -36,27 +37,7 @@ Description
 
 using namespace Foam;
 
-static label nFailed = 0;
-
-void check
-(
-    const string& what,
-    const scalar value,
-    const scalar reference,
-    const scalar tol
-)
-{
-    const scalar rel =
-        reference == 0 ? mag(value) : mag(value - reference)/mag(reference);
-    const bool ok = rel <= tol;
-    Info<< (ok ? "ok   " : "FAIL ") << what.c_str() << ": " << value
-        << " (reference " << reference << ", rel. error " << rel
-        << ", tolerance " << tol << ")" << nl;
-    if (!ok)
-    {
-        ++nFailed;
-    }
-}
+using unitTest::check;
 
 
 //- int_{r1}^{r2} r/max(l, s) dr by Simpson's rule with n intervals
@@ -299,7 +280,7 @@ int main(int argc, char *argv[])
         }
     }
 
-    Info<< nl << (nFailed ? "FAILED: " : "passed: ") << nFailed
+    Info<< nl << (unitTest::nFailed() ? "FAILED: " : "passed: ") << unitTest::nFailed()
         << " failed check(s)" << endl;
-    return nFailed ? 1 : 0;
+    return unitTest::nFailed() ? 1 : 0;
 }

@@ -71,6 +71,19 @@ const scalar dt = 1e-4;
 const label nSteps = 50000;
 
 
+//- The lens law's settings of every case (lens 1.4 r_p, s = 1e-7 m)
+dictionary lensDict()
+{
+    dictionary coeffs;
+    coeffs.add("lensRadius", 1.4);
+    coeffs.add("minimumDistance", 1e-7);
+    dictionary dict;
+    dict.add("indirect", "RongHorio");
+    dict.add("RongHorioCoeffs", coeffs);
+    return dict;
+}
+
+
 dictionary settings(const word& direct, const word& indirect)
 {
     OStringStream os;
@@ -78,9 +91,14 @@ dictionary settings(const word& direct, const word& indirect)
         << "particleParticle { restitution 0.9; friction 0.3; }"
         << "particleWall { restitution 0.9; friction 0.3; }"
         << "conduction { direct " << direct << "; indirect " << indirect
-        << "; RongHorioCoeffs { lensRadius 1.4; minimumDistance 1e-7; } }";
+        << "; }";
     IStringStream is(os.str());
-    return dictionary(is);
+    dictionary dict(is);
+    dict.subDict("conduction").add
+    (
+        "RongHorioCoeffs", lensDict().subDict("RongHorioCoeffs")
+    );
+    return dict;
 }
 
 
@@ -205,13 +223,7 @@ void caseWall(const bool direct)
             2.0/3.0
         );
 
-    dictionary lawDict;
-    lawDict.add("indirect", "RongHorio");
-    dictionary coeffs;
-    coeffs.add("lensRadius", 1.4);
-    coeffs.add("minimumDistance", 1e-7);
-    lawDict.add("RongHorioCoeffs", coeffs);
-    const indirectConductions::RongHorio lens(lawDict);
+    const indirectConductions::RongHorio lens(lensDict());
 
     // Positive: overlap; negative: gap (in units of r)
     const List<scalar> overlaps =
@@ -321,13 +333,7 @@ void casePairDirect()
 
 void casePairIndirect()
 {
-    dictionary lawDict;
-    lawDict.add("indirect", "RongHorio");
-    dictionary coeffs;
-    coeffs.add("lensRadius", 1.4);
-    coeffs.add("minimumDistance", 1e-7);
-    lawDict.add("RongHorioCoeffs", coeffs);
-    const indirectConductions::RongHorio lens(lawDict);
+    const indirectConductions::RongHorio lens(lensDict());
 
     // Surface gaps (in units of r): no contact, no force: they stay
     for (const scalar f : {0.4, 0.04, 0.0004})

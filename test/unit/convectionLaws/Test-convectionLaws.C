@@ -22,27 +22,14 @@ Description
 */
 
 #include "argList.H"
+#include "unitCheck.H"
 #include "convectionLaw.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
 
 using namespace Foam;
 
-static label nFailed = 0;
-
-void check(const string& what, const scalar value, const scalar reference)
-{
-    const scalar tol = 1e-12;
-    const scalar rel = mag(value - reference)/mag(reference);
-    const bool ok = rel <= tol;
-    Info<< (ok ? "ok   " : "FAIL ") << what.c_str() << ": " << value
-        << " (reference " << reference << ", rel. error " << rel
-        << ", tolerance " << tol << ")" << nl;
-    if (!ok)
-    {
-        ++nFailed;
-    }
-}
+using unitTest::check;
 
 
 autoPtr<convectionLaw> law(const word& name)
@@ -87,7 +74,8 @@ int main(int argc, char *argv[])
                 "Gunn Nu(eps " + Foam::name(pt[0]) + ", Re "
               + Foam::name(pt[1]) + ", Pr " + Foam::name(pt[2]) + ")",
                 gunn->Nu(pt[0], pt[1], pt[2]),
-                pt[3]
+                pt[3],
+                1e-12
             );
         }
     }
@@ -108,7 +96,8 @@ int main(int argc, char *argv[])
                 "RanzMarshall Nu(Re " + Foam::name(pt[0]) + ", Pr "
               + Foam::name(pt[1]) + ")",
                 rm->Nu(0.5, pt[0], pt[1]),
-                pt[2]
+                pt[2],
+                1e-12
             );
         }
     }
@@ -128,7 +117,8 @@ int main(int argc, char *argv[])
         (
             name + ": conductance of a primary (K = 1) = Nu k_f pi d_p",
             l->parcelConductance(1, dp, eps, slip, rho, mu, kappa, Pr),
-            hAPrimary
+            hAPrimary,
+            1e-12
         );
 
         const scalar mPrimary = rhoP*pi/6*pow3(dp);
@@ -142,7 +132,8 @@ int main(int argc, char *argv[])
                 name + ": parcel of K = " + Foam::name(K)
               + " exchanges K^3 primaries' heat",
                 hA,
-                pow3(K)*hAPrimary
+                pow3(K)*hAPrimary,
+                1e-12
             );
             const scalar mParcel = rhoP*pi/6*pow3(d);
             check
@@ -150,12 +141,13 @@ int main(int argc, char *argv[])
                 name + ": parcel of K = " + Foam::name(K)
               + " heats at the primary's rate h A/(m c_p)",
                 hA/(mParcel*cp),
-                hAPrimary/(mPrimary*cp)
+                hAPrimary/(mPrimary*cp),
+                1e-12
             );
         }
     }
 
-    Info<< nl << (nFailed ? "FAILED: " : "passed: ") << nFailed
+    Info<< nl << (unitTest::nFailed() ? "FAILED: " : "passed: ") << unitTest::nFailed()
         << " failed check(s)" << endl;
-    return nFailed ? 1 : 0;
+    return unitTest::nFailed() ? 1 : 0;
 }

@@ -20,24 +20,10 @@ Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
     return v;
 }
 
-const Foam::dictionary& conductionDict(const Foam::dictionary& engineDict)
-{
-    return engineDict.found("conduction")
-        ? engineDict.subDict("conduction")
-        : Foam::dictionary::null;
-}
-
-Foam::dictionary noneDict()
-{
-    Foam::dictionary d;
-    d.add("direct", "none");
-    d.add("indirect", "none");
-    return d;
-}
-
-//- The conduction dictionary with the lens law's minimum distance scaled
-//  by K (coarse graining: every length of a parcel contact scales)
-Foam::dictionary scaledDict
+//- The engine's conduction dictionary (none without one), with the lens
+//  law's minimum distance scaled by K (coarse graining: every length of a
+//  parcel contact scales)
+Foam::dictionary conductionDict
 (
     const Foam::dictionary& engineDict,
     const Foam::scalar K
@@ -46,7 +32,10 @@ Foam::dictionary scaledDict
     using namespace Foam;
     if (!engineDict.found("conduction"))
     {
-        return noneDict();
+        dictionary none;
+        none.add("direct", "none");
+        none.add("indirect", "none");
+        return none;
     }
     dictionary d(engineDict.subDict("conduction"));
     const word coeffs(d.lookupOrDefault<word>("indirect", "none") + "Coeffs");
@@ -69,15 +58,11 @@ Foam::contactConduction::contactConduction
     const scalar coarseGrainFactor
 )
 :
-    direct_
+    direct_(directConduction::New(conductionDict(engineDict, coarseGrainFactor))),
+    indirect_
     (
-        directConduction::New
-        (
-            engineDict.found("conduction")
-          ? conductionDict(engineDict) : noneDict()
-        )
+        indirectConduction::New(conductionDict(engineDict, coarseGrainFactor))
     ),
-    indirect_(indirectConduction::New(scaledDict(engineDict, coarseGrainFactor))),
     cp_(0),
     gPP_(0),
     gPW_(materials.nWalls(), scalar(0)),

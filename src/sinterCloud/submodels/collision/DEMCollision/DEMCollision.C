@@ -249,9 +249,10 @@ void Foam::DEMCollision<CloudType>::setWallTemperature()
     for (const label patchi : wallPatches_)
     {
         const fvPatchScalarField& Tp = T->boundaryField()[patchi];
+        const bool fixed = isA<fixedValueFvPatchScalarField>(Tp);
         for (const scalar t : Tp)
         {
-            conducting[n] = isA<fixedValueFvPatchScalarField>(Tp);
+            conducting[n] = fixed;
             Tw[n++] = t;
         }
     }
