@@ -15,6 +15,8 @@ Description
         d(eps rho h)/dt + div(eps rho U h)
             = div(eps k_eff/Cp grad(h)) + Q_pf                        (4.5)
         eps k_eff = (1 - sqrt(1 - eps)) k                             (4.6)
+    Thermal wall condition (tBC, bedWallTemperature on T): the wall faces
+    conduct with the bed conductivity k_b of eq 4.14-4.24.
     Pressure-velocity coupling: PIMPLE; the particle drag is semi-implicit,
     explicit particle forces and gravity enter the pressure equation as face
     fluxes.
@@ -45,6 +47,7 @@ Description
 #include "fixedFluxPressureFvPatchScalarField.H"
 #include "basicSinterCloud.H"
 #include "cloudCoupling.H"
+#include "bedWallTemperatureFvPatchScalarField.H"
 #include "incrementSolve.H"
 
 int main(int argc, char *argv[])

@@ -4,6 +4,9 @@
 #include "DEMCloud.H"
 #include "fvmSup.H"
 #include "diffusionSmoother.H"
+#include "granularTemperature.H"
+#include "coarseGrainFactor.H"
+#include "ZehnerSchlunder.H"
 
 namespace Foam
 {
@@ -87,6 +90,41 @@ Foam::DEMCloud<CloudType>::DEMCloud
             parcelType::readFields(*this);
             this->deleteLostParticles();
         }
+
+        const fvMesh& mesh = this->mesh();
+        granularTemperature_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "granularTemperature",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(sqr(dimVelocity), Zero)
+            )
+        );
+        kineticConductivity_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "solidKineticConductivity",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimPower/dimLength/dimTemperature, Zero)
+            )
+        );
+        updateBedFields();
     }
 }
 
@@ -108,7 +146,43 @@ void Foam::DEMCloud<CloudType>::evolve()
     {
         typename parcelType::trackingData td(*this);
         this->solve(*this, td);
+        updateBedFields();
     }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::updateBedFields()
+{
+    const label nCells = this->mesh().nCells();
+    const scalar K = coarseGrainFactor(this->constProps().dict());
+
+    labelList cell(this->size());
+    vectorField U(this->size());
+    scalarField rhoCpd(nCells, scalar(0));
+    labelList n(nCells, 0);
+    label i = 0;
+    for (const parcelType& p : *this)
+    {
+        cell[i] = p.cell();
+        U[i] = p.U();
+        rhoCpd[p.cell()] += p.rho()*p.Cp()*p.d()/K;
+        ++n[p.cell()];
+        ++i;
+    }
+
+    scalarField& Theta = granularTemperature_->primitiveFieldRef();
+    Theta = granularTemperature::cells(nCells, cell, U);
+    scalarField& kKinetic = kineticConductivity_->primitiveFieldRef();
+    forAll(kKinetic, c)
+    {
+        kKinetic[c] =
+            n[c]
+          ? ZehnerSchlunder::solidKinetic(rhoCpd[c]/n[c], 1, 1, Theta[c])
+          : scalar(0);
+    }
+    granularTemperature_->correctBoundaryConditions();
+    kineticConductivity_->correctBoundaryConditions();
 }
 
 

@@ -226,6 +226,23 @@ Foam::DEMCollision<CloudType>::DEMCollision
             }
         }
         Info<< " (the others are adiabatic)" << endl;
+
+        // The thermal wall condition lumps the particle-wall conduction
+        // into the gas's wall flux (thesis §4.2.2)
+        for (const label patchi : wallPatches_)
+        {
+            if
+            (
+                T
+             && T->boundaryField()[patchi].type() == "bedWallTemperature"
+            )
+            {
+                Info<< "    particle-wall conduction off on "
+                    << mesh.boundaryMesh()[patchi].name()
+                    << ": its thermal wall condition (bedWallTemperature)"
+                       " takes the bed-to-wall heat" << endl;
+            }
+        }
     }
 }
 
