@@ -123,7 +123,7 @@ def main():
 
     rows = balance_rows(case)
     Hp0 = rows[0][1]
-    t, Hp, Hg, Hout, imbalance, Hwall = rows[-1]
+    t, Hp, Hg, Hout, imbalance, Hwall = rows[-1][:6]
     lost = Hp0 - Hp
     gained = Hg - rows[0][2]
     rel = abs(imbalance) / lost

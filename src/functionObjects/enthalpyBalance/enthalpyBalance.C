@@ -51,6 +51,7 @@ Foam::functionObjects::enthalpyBalance::enthalpyBalance
         writeTabbed(file(), "H_out");
         writeTabbed(file(), "imbalance");
         writeTabbed(file(), "H_wall");
+        writeTabbed(file(), "T_p_mean");
         file() << endl;
     }
 }
@@ -83,16 +84,27 @@ Foam::scalar Foam::functionObjects::enthalpyBalance::gasEnthalpy() const
 }
 
 
-Foam::scalar Foam::functionObjects::enthalpyBalance::particleEnthalpy() const
+Foam::scalar Foam::functionObjects::enthalpyBalance::particleEnthalpy
+(
+    scalar& meanT
+) const
 {
     scalar H = 0;
+    scalar mass = 0;
+    scalar mT = 0;
     if (const basicSinterCloud* cloudPtr = findSinterCloud(mesh_, cloudName_))
     {
         for (const auto& p : *cloudPtr)
         {
-            H += p.nParticle()*p.mass()*p.Cp()*p.T();
+            const scalar m = p.nParticle()*p.mass();
+            H += m*p.Cp()*p.T();
+            mass += m;
+            mT += m*p.T();
         }
     }
+    reduce(mass, sumOp<scalar>());
+    reduce(mT, sumOp<scalar>());
+    meanT = mass > 0 ? mT/mass : scalar(0);
     return returnReduce(H, sumOp<scalar>());
 }
 
@@ -160,7 +172,8 @@ bool Foam::functionObjects::enthalpyBalance::execute()
 
 bool Foam::functionObjects::enthalpyBalance::write()
 {
-    const scalar Hp = particleEnthalpy();
+    scalar meanTp = 0;
+    const scalar Hp = particleEnthalpy(meanTp);
     const scalar Hg = gasEnthalpy();
     if (!haveInitial_)
     {
@@ -180,7 +193,7 @@ bool Foam::functionObjects::enthalpyBalance::write()
         file()
             << mesh_.time().timeName() << tab << Hp << tab << Hg << tab
             << Hout_ << tab << (Hp - Hp0_) + (Hg - Hg0_) + Hout_ - Hwall_
-            << tab << Hwall_ << endl;
+            << tab << Hwall_ << tab << meanTp << endl;
     }
     return true;
 }

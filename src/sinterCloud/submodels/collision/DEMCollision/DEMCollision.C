@@ -208,17 +208,31 @@ Foam::DEMCollision<CloudType>::DEMCollision
     // The parcels follow the engine's particles wherever it sorts them
     engine_.setSpatialSort(true);
 
+    adiabaticWall_.setSize(wallPatches_.size(), false);
     if (engine_.conduction().active())
     {
         const fvMesh& mesh = owner.mesh();
+        const wordRes adiabatic
+        (
+            coeffs_.subDict("conduction")
+                .lookupOrDefault<wordRes>("adiabaticWalls", wordRes())
+        );
+        forAll(wallPatches_, i)
+        {
+            adiabaticWall_[i] =
+                adiabatic.match(mesh.boundaryMesh()[wallPatches_[i]].name());
+        }
+
         const volScalarField* T = mesh.findObject<volScalarField>("T");
         Info<< "    contact conduction to the wall patches of fixed"
                " temperature:";
-        for (const label patchi : wallPatches_)
+        forAll(wallPatches_, i)
         {
+            const label patchi = wallPatches_[i];
             if
             (
                 T
+             && !adiabaticWall_[i]
              && isA<fixedValueFvPatchScalarField>(T->boundaryField()[patchi])
             )
             {
@@ -263,10 +277,11 @@ void Foam::DEMCollision<CloudType>::setWallTemperature()
     scalarField Tw(engine_.walls().size());
     boolList conducting(Tw.size());
     label n = 0;
-    for (const label patchi : wallPatches_)
+    forAll(wallPatches_, i)
     {
-        const fvPatchScalarField& Tp = T->boundaryField()[patchi];
-        const bool fixed = isA<fixedValueFvPatchScalarField>(Tp);
+        const fvPatchScalarField& Tp = T->boundaryField()[wallPatches_[i]];
+        const bool fixed =
+            !adiabaticWall_[i] && isA<fixedValueFvPatchScalarField>(Tp);
         for (const scalar t : Tp)
         {
             conducting[n] = fixed;
