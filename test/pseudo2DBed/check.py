@@ -22,7 +22,7 @@ def at(series, t):
 
 
 def main():
-    work, tut = Path(sys.argv[1]), Path(sys.argv[2])
+    work, tut = Path(sys.argv[1]), Path(sys.argv[2]).resolve()
     # The fill ends at 0.1 s; the cooling is measured over [0.12, 0.2] s,
     # all parcels in and the last ones settled into the bed
     t0, t1 = 0.12, 0.2
