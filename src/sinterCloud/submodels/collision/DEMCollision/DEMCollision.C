@@ -212,15 +212,35 @@ Foam::DEMCollision<CloudType>::DEMCollision
     if (engine_.conduction().active())
     {
         const fvMesh& mesh = owner.mesh();
+        const dictionary& conductionDict = coeffs_.subDict("conduction");
         const wordRes adiabatic
         (
-            coeffs_.subDict("conduction")
-                .lookupOrDefault<wordRes>("adiabaticWalls", wordRes())
+            conductionDict.lookupOrDefault<wordRes>("adiabaticWalls", wordRes())
         );
+        wordList wallNames(wallPatches_.size());
         forAll(wallPatches_, i)
         {
-            adiabaticWall_[i] =
-                adiabatic.match(mesh.boundaryMesh()[wallPatches_[i]].name());
+            wallNames[i] = mesh.boundaryMesh()[wallPatches_[i]].name();
+            adiabaticWall_[i] = adiabatic.match(wallNames[i]);
+        }
+
+        // Each entry names a DEM wall patch (a typo would leave a wall
+        // conducting without a word)
+        for (const wordRe& entry : adiabatic)
+        {
+            bool found = false;
+            for (const word& name : wallNames)
+            {
+                found = found || entry.match(name);
+            }
+            if (!found)
+            {
+                FatalIOErrorInFunction(conductionDict)
+                    << "adiabaticWalls entry " << entry << " in "
+                    << conductionDict.name() << " matches no DEM wall patch."
+                    << " Valid patches are " << wallNames
+                    << exit(FatalIOError);
+            }
         }
 
         const volScalarField* T = mesh.findObject<volScalarField>("T");
