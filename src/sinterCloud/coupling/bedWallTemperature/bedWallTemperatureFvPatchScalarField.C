@@ -5,7 +5,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "basicThermo.H"
-#include "IOdictionary.H"
+#include "contactMaterials.H"
 
 namespace Foam
 {
@@ -40,27 +40,12 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
             << exit(FatalIOError);
     }
 
-    const fvMesh& mesh = patch().boundaryMesh().mesh();
-    const IOdictionary materials
+    // The particles' conductivity, from the case's one material file
+    const contactMaterials materials
     (
-        IOobject
-        (
-            "materialProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        contactMaterials::read(patch().boundaryMesh().mesh())
     );
-    const word particle(materials.get<word>("particle"));
-    if (!materials.isDict(particle))
-    {
-        FatalIOErrorInFunction(materials)
-            << "Unknown material " << particle << " (keyword particle) in "
-            << materials.name() << exit(FatalIOError);
-    }
-    const dictionary& material = materials.subDict(particle);
+    const dictionary& material = materials.particleDict();
     if (!material.found("thermalConductivity"))
     {
         FatalIOErrorInFunction(material)
@@ -69,13 +54,7 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
             << dict.name() << " needs the particles' conductivity"
             << exit(FatalIOError);
     }
-    ks_ = material.get<scalar>("thermalConductivity");
-    if (!(ks_ > 0))
-    {
-        FatalIOErrorInFunction(material)
-            << "thermalConductivity " << ks_ << " in " << material.name()
-            << " must be > 0 W/(m K)" << exit(FatalIOError);
-    }
+    ks_ = contactMaterials::positive(material, "thermalConductivity");
 }
 
 

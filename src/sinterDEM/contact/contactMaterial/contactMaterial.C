@@ -3,23 +3,7 @@
 
 #include "contactMaterial.H"
 #include "effectiveProperties.H"
-
-namespace
-{
-
-Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
-{
-    const Foam::scalar value = dict.get<Foam::scalar>(key);
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << key << " in " << dict.name()
-            << " must be positive, not " << value << Foam::exit(Foam::FatalIOError);
-    }
-    return value;
-}
-
-} // End anonymous namespace
+#include "contactMaterials.H"
 
 
 Foam::contactMaterial::contactMaterial(const dictionary& dict)
@@ -27,10 +11,10 @@ Foam::contactMaterial::contactMaterial(const dictionary& dict)
     youngsModulus_
     (
         dict.found("demYoungsModulus")
-      ? readPositive(dict, "demYoungsModulus")
-      : readPositive(dict, "youngsModulus")
+      ? contactMaterials::positive(dict, "demYoungsModulus")
+      : contactMaterials::positive(dict, "youngsModulus")
     ),
-    realYoungsModulus_(readPositive(dict, "youngsModulus")),
+    realYoungsModulus_(contactMaterials::positive(dict, "youngsModulus")),
     poissonsRatio_(dict.get<scalar>("poissonsRatio"))
 {
     if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))

@@ -3,6 +3,8 @@
 
 #include "contactMaterials.H"
 #include "DynamicList.H"
+#include "IOdictionary.H"
+#include "Time.H"
 
 namespace
 {
@@ -117,4 +119,38 @@ void Foam::contactMaterials::checkSame
             << "; with materials { #include \"materialProperties\" }"
             << exit(FatalIOError);
     }
+}
+
+
+Foam::dictionary Foam::contactMaterials::read(const objectRegistry& db)
+{
+    return IOdictionary
+    (
+        IOobject
+        (
+            "materialProperties",
+            db.time().constant(),
+            db,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+}
+
+
+Foam::scalar Foam::contactMaterials::positive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " in " << dict.name()
+            << " must be positive, not " << value << exit(FatalIOError);
+    }
+    return value;
 }

@@ -7,19 +7,6 @@
 namespace
 {
 
-Foam::scalar readPositive(const Foam::dictionary& dict, const Foam::word& key)
-{
-    using namespace Foam;
-    const scalar v = dict.get<scalar>(key);
-    if (!(v > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << key << " in " << dict.name()
-            << " must be positive, not " << v << exit(FatalIOError);
-    }
-    return v;
-}
-
 //- The engine's conduction dictionary (none without one), with the lens
 //  law's minimum distance scaled by K (coarse graining: every length of a
 //  parcel contact scales)
@@ -76,8 +63,8 @@ Foam::contactConduction::contactConduction
     }
 
     const dictionary& pDict = materials.particleDict();
-    cp_ = readPositive(pDict, "specificHeat");
-    const scalar kP = readPositive(pDict, "thermalConductivity");
+    cp_ = contactMaterials::positive(pDict, "specificHeat");
+    const scalar kP = contactMaterials::positive(pDict, "thermalConductivity");
 
     // g = G/R_c of the direct law for each pair of materials
     gPP_ = direct_->conductance(kP, kP, 1);
@@ -91,7 +78,7 @@ Foam::contactConduction::contactConduction
     {
         const dictionary& wDict =
             materials.dict().subDict(materials.wallNames()[m]);
-        const scalar kW = readPositive(wDict, "thermalConductivity");
+        const scalar kW = contactMaterials::positive(wDict, "thermalConductivity");
         gPW_[m] = direct_->conductance(kP, kW, 1);
         const contactMaterial& w = materials.wall(m);
         cPW_[m] =

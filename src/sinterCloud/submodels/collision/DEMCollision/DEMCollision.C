@@ -66,27 +66,6 @@ Foam::demWalls Foam::DEMCollision<CloudType>::meshWalls() const
 
 
 template<class CloudType>
-Foam::dictionary Foam::DEMCollision<CloudType>::readMaterials
-(
-    const fvMesh& mesh
-)
-{
-    return IOdictionary
-    (
-        IOobject
-        (
-            "materialProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-}
-
-
-template<class CloudType>
 const Foam::dictionary& Foam::DEMCollision<CloudType>::coeffDict
 (
     const dictionary& subModels
@@ -119,7 +98,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
     engine_
     (
         coeffs_,
-        readMaterials(owner.mesh()),
+        contactMaterials::read(owner.mesh()),
         coarseGrainFactor(owner.constProps().dict())
     ),
     deltaT_(coeffs_.lookupOrDefault<scalar>("deltaT", 0)),
