@@ -739,6 +739,8 @@ void Foam::demEngine::beginStep()
     }
     rebuildRequested_ = false;
     wallHeat_ = 0;
+    wallFaceHeat_.setSize(walls_.size());
+    wallFaceHeat_ = 0;
 
     vector* __restrict__ Jd = particles_.dragImpulse.data();
     for (label i = 0; i < nLocal_; ++i)
@@ -775,6 +777,10 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 
     demParticles& P = particles_;
     const label nL = nLocal();
+    if (wallFaceHeat_.size() != walls_.size())
+    {
+        wallFaceHeat_.setSize(walls_.size(), scalar(0));
+    }
 
     for (label s = 0; s < nSteps; ++s)
     {
@@ -818,7 +824,11 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
             scalar* __restrict__ Q = heatFlow_.data();
             conduction_.pairs(P, pairs_, Q);
             wallHeat_ +=
-                deltaT*conduction_.walls(P, wallContacts_, walls_, Q);
+                deltaT
+               *conduction_.walls
+                (
+                    P, wallContacts_, walls_, Q, deltaT, wallFaceHeat_.data()
+                );
             conduction_.heat(P, nL, Q, deltaT);
         }
     }

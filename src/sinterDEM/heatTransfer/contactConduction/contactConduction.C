@@ -153,7 +153,9 @@ Foam::scalar Foam::contactConduction::walls
     const demParticles& P,
     const contactList& C,
     const demWalls& walls,
-    scalar* Q
+    scalar* Q,
+    const scalar deltaT,
+    scalar* faceHeat
 ) const
 {
     const scalar* __restrict__ r = P.radius.cdata();
@@ -193,6 +195,7 @@ Foam::scalar Foam::contactConduction::walls
         }
         const scalar q = wallFactor_*G*(Tw[face[k]] - T[i]);
         Q[i] += q;
+        faceHeat[face[k]] += deltaT*q;
         total += q;
     }
     return total;

@@ -3,6 +3,7 @@
 
 #include "DEMCloud.H"
 #include "fvmSup.H"
+#include "gradScheme.H"
 #include "diffusionSmoother.H"
 #include "granularTemperature.H"
 #include "coarseGrainFactor.H"
@@ -20,6 +21,17 @@ namespace DEMCloudDetail
     const diffusionSmoother& smoother(const fvMesh& mesh)
     {
         return Coupling::New(mesh).smoother();
+    }
+
+    //- The gradient of a cell field, limited so that the value it moves
+    //  to a cell's faces stays within the cell's and its neighbours' values
+    //  (cellLimited Gauss linear 1, whatever fvSchemes says)
+    inline vectorField limitedGrad(const volScalarField& f)
+    {
+        IStringStream scheme("cellLimited Gauss linear 1");
+        return
+            fv::gradScheme<scalar>::New(f.mesh(), scheme)()
+           .grad(f, "limitedGrad(" + f.name() + ')')().primitiveField();
     }
 }
 }
@@ -316,14 +328,23 @@ void Foam::DEMCloud<CloudType>::motion
     sourceCell_.setSize(nLocal);
     heatFraction_.setSize(nLocal);
     heatFrom_.setSize(nLocal);
+    heatGasAt_.setSize(nLocal);
+    vectorField gasGradT0;
     if (implicitHeat)
     {
-        // The gas temperature at the start, and the sum of m c_p f T_p of
-        // each cell's parcels
-        gasT0_ = this->thermo().thermo().T().primitiveField();
+        // The gas temperature at the start and its gradient (limited: the
+        // value moved to a parcel stays within the cell's neighbours), and
+        // the sums of m c_p f T_p and m c_p f T_g(x_p) of each cell's
+        // parcels
+        const volScalarField& T = this->thermo().thermo().T();
+        gasT0_ = T.primitiveField();
+        gasGradT0 = DEMCloudDetail::limitedGrad(T);
         heatTarget_.setSize(this->mesh().nCells());
         heatTarget_ = 0;
+        heatGas_.setSize(this->mesh().nCells());
+        heatGas_ = 0;
     }
+    const vectorField& cellCentres = this->mesh().C().primitiveField();
     for (parcelType& p : cloud)
     {
         const label n = p.demIndex();
@@ -360,6 +381,11 @@ void Foam::DEMCloud<CloudType>::motion
         // after the gas is solved (correctHeatExchange)
         scalar dhsTrans, hAdt;
         const scalar Tn = p.T();
+        const scalar TgAt =
+            implicitHeat
+          ? gasT0_[p.cell()]
+          + (gasGradT0[p.cell()] & (p.position() - cellCentres[p.cell()]))
+          : 0;
         const scalar Tconv = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
         const scalar mCp = m*p.Cp();
         const scalar fraction =
@@ -377,6 +403,7 @@ void Foam::DEMCloud<CloudType>::motion
             {
                 this->hsCoeff()[celli] += np*mCp*fraction;
                 heatTarget_[celli] += np*mCp*fraction*Tn;
+                heatGas_[celli] += np*mCp*fraction*TgAt;
             }
             else
             {
@@ -399,6 +426,7 @@ void Foam::DEMCloud<CloudType>::motion
         sourceCell_[n] = celli;
         heatFraction_[n] = fraction;
         heatFrom_[n] = Tn;
+        heatGasAt_[n] = TgAt;
     }
 
     // 3. The DEM sub-steps
@@ -415,15 +443,18 @@ void Foam::DEMCloud<CloudType>::motion
         labelList cell(nLocal);
         scalarList fraction(nLocal);
         scalarList from(nLocal);
+        scalarList gasAt(nLocal);
         forAll(newIndex, k)
         {
             cell[newIndex[k]] = sourceCell_[k];
             fraction[newIndex[k]] = heatFraction_[k];
             from[newIndex[k]] = heatFrom_[k];
+            gasAt[newIndex[k]] = heatGasAt_[k];
         }
         sourceCell_.transfer(cell);
         heatFraction_.transfer(fraction);
         heatFrom_.transfer(from);
+        heatGasAt_.transfer(gasAt);
     }
 
     // 4. Results onto the parcels (temperatures too, with conduction); the
@@ -472,15 +503,16 @@ void Foam::DEMCloud<CloudType>::parcelLeaves
 
     if (heatFraction_[k] != 0)
     {
-        // Leaving in the step: the exchange at the start's gas temperature,
-        // explicit, taken out of the implicit one
+        // Leaving in the step: the exchange at the start's gas temperature
+        // where it was, explicit, taken out of the implicit one
         const label c = sourceCell_[k];
         const scalar K = p.nParticle()*p.mass()*p.Cp()*heatFraction_[k];
-        const scalar dT = heatFraction_[k]*(gasT0_[c] - heatFrom_[k]);
+        const scalar dT = heatFraction_[k]*(heatGasAt_[k] - heatFrom_[k]);
         p.T() += dT;
         this->hsTrans()[c] -= p.nParticle()*p.mass()*p.Cp()*dT;
         this->hsCoeff()[c] -= K;
         heatTarget_[c] -= K*heatFrom_[k];
+        heatGas_[c] -= K*heatGasAt_[k];
         heatFraction_[k] = 0;
     }
 
@@ -516,10 +548,17 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
     Sh.source() -=
         V*smoother.smooth<scalar>(this->hsTrans().field()/(V*dt), "cloudHeat");
 
-    // Implicit: the gas of each cell towards its parcels,
-    //     B (T_p - T_g),  B T_p = S(sum m c_p f T_p/(V dt)),
-    //     B = S(sum m c_p f/(V dt)),
-    // T_g = T_g^0 + (h - h^0)/c_p: bounded by the parcels' temperatures
+    // Implicit: each parcel against the gas temperature where it is at
+    // the start, T_g^0(x_p) = T_g^0 + grad T_g^0 . (x_p - x_c) of its cell,
+    // plus the gas's change over the step, spread and gathered alike,
+    //     S(sum m c_p f (T_p - T_g^0(x_p))/(V dt)) - B (T_g - T_g^0),
+    //     B = S(sum m c_p f/(V dt)),  T_g = T_g^0 + (h - h^0)/c_p.
+    // Against the gas where the parcel is, a parcel in a gas of its own
+    // temperature exchanges nothing, in a gradient too; against a smoothed
+    // (or cell) gas temperature every parcel would exchange along the
+    // gradient with gas up to the smoothing length L away, a conduction
+    // of about a_v h 2 L^2 that no bed has
+    // (validation/heatTransfer/packedBed)
     if (heatImplicit())
     {
         const volScalarField Cp(this->thermo().thermo().Cp());
@@ -534,10 +573,14 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
                 this->hsCoeff().field()/(V*dt), "cloudHeatCoeff"
             )
         );
+        const scalarField BTg
+        (
+            smoother.smooth<scalar>(heatGas_/(V*dt), "cloudHeatGas")
+        );
         const scalarField BbyCp(B/Cp.primitiveField());
         Sh.diag() -= V*BbyCp;
         Sh.source() -=
-            V*(A - B*gasT0_ + BbyCp*hs.oldTime().primitiveField());
+            V*(A - BTg + BbyCp*hs.oldTime().primitiveField());
     }
     return tSh;
 }
@@ -551,19 +594,19 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
         return;
     }
 
-    // Each parcel towards the gas temperature gathered over the smoothing
-    // length with the transpose of the spreading (the smoothing is its own
-    // transpose), T_g = T_g^0 + (h - h^0)/c_p as the gas took it: what
-    // the gas gave the parcels, exactly
+    // Each parcel towards the gas temperature where it was at the start
+    // plus the gas's change over the step, (h - h^0)/c_p as the gas took
+    // it, gathered over the smoothing length with the transpose of the
+    // spreading (the smoothing is its own transpose): what the gas gave
+    // the parcels, exactly
     const diffusionSmoother& smoother = DEMCloudDetail::smoother(this->mesh());
     const volScalarField& hs = this->thermo().thermo().he();
     const volScalarField Cp(this->thermo().thermo().Cp());
-    const scalarField Tg
+    const scalarField dTg
     (
         smoother.smooth<scalar>
         (
-            gasT0_
-          + (hs.primitiveField() - hs.oldTime().primitiveField())
+            (hs.primitiveField() - hs.oldTime().primitiveField())
            /Cp.primitiveField(),
             "cloudHeatGather"
         )
@@ -575,7 +618,9 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
         if (k >= 0 && k < heatFraction_.size() && heatFraction_[k] != 0)
         {
             // Conduction in the step moved p.T() on from heatFrom_
-            p.T() += heatFraction_[k]*(Tg[sourceCell_[k]] - heatFrom_[k]);
+            p.T() +=
+                heatFraction_[k]
+               *(heatGasAt_[k] + dTg[sourceCell_[k]] - heatFrom_[k]);
         }
     }
 }

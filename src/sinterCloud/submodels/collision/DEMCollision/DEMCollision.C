@@ -362,3 +362,36 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
     Info<< "; lists built " << engine_.nBuilds() - builds0 << " times"
         << endl;
 }
+
+
+template<class CloudType>
+Foam::scalar Foam::DEMCollision<CloudType>::conductedWallHeat
+(
+    const label patchi
+) const
+{
+    const scalarList& faceHeat = engine_.wallFaceHeat();
+    if (faceHeat.empty())
+    {
+        return 0;
+    }
+
+    // The engine's wall faces are the patches' faces in wallPatches_ order
+    const polyBoundaryMesh& patches = owner_.mesh().boundaryMesh();
+    label start = 0;
+    for (const label wallPatchi : wallPatches_)
+    {
+        const label n = patches[wallPatchi].size();
+        if (wallPatchi == patchi)
+        {
+            scalar heat = 0;
+            for (label f = start; f < start + n; ++f)
+            {
+                heat += faceHeat[f];
+            }
+            return heat;
+        }
+        start += n;
+    }
+    return 0;
+}
