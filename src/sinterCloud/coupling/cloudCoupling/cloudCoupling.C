@@ -25,6 +25,27 @@ Foam::scalar readVoidageMin(const Foam::dictionary& dict)
     return value;
 }
 
+
+bool readLocalGasTemperature(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    const word kind
+    (
+        dict.lookupOrDefault<word>("parcelGasTemperature", "smoothed")
+    );
+    if (kind != "smoothed" && kind != "local")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown parcelGasTemperature " << kind << nl
+            << "Valid types are (smoothed local)"
+            << exit(FatalIOError);
+    }
+    Info<< "Parcel-gas heat exchange with the gas temperature "
+        << (kind == "local" ? "where each parcel is" : "smoothed over L")
+        << " (parcelGasTemperature " << kind << ')' << endl;
+    return kind == "local";
+}
+
 } // End anonymous namespace
 
 
@@ -44,5 +65,6 @@ Foam::cloudCoupling::cloudCoupling(const fvMesh& mesh)
     ),
     voidageMin_(readVoidageMin(dict_)),
     volumeFraction_(volumeFractionModel::New(mesh, dict_)),
-    smoother_(mesh, dict_)
+    smoother_(mesh, dict_),
+    localGasTemperature_(readLocalGasTemperature(dict_))
 {}

@@ -23,6 +23,14 @@ namespace DEMCloudDetail
         return Coupling::New(mesh).smoother();
     }
 
+    //- Whether parcels exchange heat with the gas where they are
+    //  (parcelGasTemperature local)
+    template<class Coupling = cloudCoupling>
+    bool localGasTemperature(const fvMesh& mesh)
+    {
+        return Coupling::New(mesh).localGasTemperature();
+    }
+
     //- The gradient of a cell field, limited so that the value it moves
     //  to a cell's faces stays within the cell's and its neighbours' values
     //  (cellLimited Gauss linear 1, whatever fvSchemes says)
@@ -329,20 +337,24 @@ void Foam::DEMCloud<CloudType>::motion
     heatFraction_.setSize(nLocal);
     heatFrom_.setSize(nLocal);
     heatGasAt_.setSize(nLocal);
+    const bool localGas =
+        implicitHeat && DEMCloudDetail::localGasTemperature(this->mesh());
     vectorField gasGradT0;
     if (implicitHeat)
     {
-        // The gas temperature at the start and its gradient (limited: the
-        // value moved to a parcel stays within the cell's neighbours), and
-        // the sums of m c_p f T_p and m c_p f T_g(x_p) of each cell's
-        // parcels
-        const volScalarField& T = this->thermo().thermo().T();
-        gasT0_ = T.primitiveField();
-        gasGradT0 = DEMCloudDetail::limitedGrad(T);
+        // The gas temperature at the start and the sum of m c_p f T_p of
+        // each cell's parcels; with local, the gradient (limited: the value
+        // moved to a parcel stays near the cell's neighbours') and the sum
+        // of m c_p f T_g(x_p)
+        gasT0_ = this->thermo().thermo().T().primitiveField();
         heatTarget_.setSize(this->mesh().nCells());
         heatTarget_ = 0;
-        heatGas_.setSize(this->mesh().nCells());
-        heatGas_ = 0;
+        if (localGas)
+        {
+            gasGradT0 = DEMCloudDetail::limitedGrad(this->thermo().thermo().T());
+            heatGas_.setSize(this->mesh().nCells());
+            heatGas_ = 0;
+        }
     }
     const vectorField& cellCentres = this->mesh().C().primitiveField();
     for (parcelType& p : cloud)
@@ -382,10 +394,10 @@ void Foam::DEMCloud<CloudType>::motion
         scalar dhsTrans, hAdt;
         const scalar Tn = p.T();
         const scalar TgAt =
-            implicitHeat
+            localGas
           ? gasT0_[p.cell()]
           + (gasGradT0[p.cell()] & (p.position() - cellCentres[p.cell()]))
-          : 0;
+          : implicitHeat ? gasT0_[p.cell()] : 0;
         const scalar Tconv = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
         const scalar mCp = m*p.Cp();
         const scalar fraction =
@@ -403,7 +415,10 @@ void Foam::DEMCloud<CloudType>::motion
             {
                 this->hsCoeff()[celli] += np*mCp*fraction;
                 heatTarget_[celli] += np*mCp*fraction*Tn;
-                heatGas_[celli] += np*mCp*fraction*TgAt;
+                if (localGas)
+                {
+                    heatGas_[celli] += np*mCp*fraction*TgAt;
+                }
             }
             else
             {
@@ -512,7 +527,10 @@ void Foam::DEMCloud<CloudType>::parcelLeaves
         this->hsTrans()[c] -= p.nParticle()*p.mass()*p.Cp()*dT;
         this->hsCoeff()[c] -= K;
         heatTarget_[c] -= K*heatFrom_[k];
-        heatGas_[c] -= K*heatGasAt_[k];
+        if (DEMCloudDetail::localGasTemperature(this->mesh()))
+        {
+            heatGas_[c] -= K*heatGasAt_[k];
+        }
         heatFraction_[k] = 0;
     }
 
@@ -548,17 +566,10 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
     Sh.source() -=
         V*smoother.smooth<scalar>(this->hsTrans().field()/(V*dt), "cloudHeat");
 
-    // Implicit: each parcel against the gas temperature where it is at
-    // the start, T_g^0(x_p) = T_g^0 + grad T_g^0 . (x_p - x_c) of its cell,
-    // plus the gas's change over the step, spread and gathered alike,
-    //     S(sum m c_p f (T_p - T_g^0(x_p))/(V dt)) - B (T_g - T_g^0),
-    //     B = S(sum m c_p f/(V dt)),  T_g = T_g^0 + (h - h^0)/c_p.
-    // Against the gas where the parcel is, a parcel in a gas of its own
-    // temperature exchanges nothing, in a gradient too; against a smoothed
-    // (or cell) gas temperature every parcel would exchange along the
-    // gradient with gas up to the smoothing length L away, a conduction
-    // of about a_v h 2 L^2 that no bed has
-    // (validation/heatTransfer/packedBed)
+    // Implicit (the class's description): each cell towards its parcels,
+    //     smoothed:  S(sum m c_p f T_p/(V dt)) - B T_g,
+    //     local:     S(sum m c_p f (T_p - T_g^0(x_p))/(V dt)) - B (T_g - T_g^0),
+    //     B = S(sum m c_p f/(V dt)),  T_g = T_g^0 + (h - h^0)/c_p
     if (heatImplicit())
     {
         const volScalarField Cp(this->thermo().thermo().Cp());
@@ -575,7 +586,9 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMCloud<CloudType>::Sh
         );
         const scalarField BTg
         (
-            smoother.smooth<scalar>(heatGas_/(V*dt), "cloudHeatGas")
+            DEMCloudDetail::localGasTemperature(this->mesh())
+          ? smoother.smooth<scalar>(heatGas_/(V*dt), "cloudHeatGas")
+          : B*gasT0_
         );
         const scalarField BbyCp(B/Cp.primitiveField());
         Sh.diag() -= V*BbyCp;
@@ -594,22 +607,25 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
         return;
     }
 
-    // Each parcel towards the gas temperature where it was at the start
-    // plus the gas's change over the step, (h - h^0)/c_p as the gas took
-    // it, gathered over the smoothing length with the transpose of the
-    // spreading (the smoothing is its own transpose): what the gas gave
-    // the parcels, exactly
+    // Each parcel towards the gas temperature it meets (smoothed: the gas
+    // temperature, local: the gas's change over the step, (h - h^0)/c_p as
+    // the gas took it) gathered over the smoothing length with the
+    // transpose of the spreading (the smoothing is its own transpose):
+    // what the gas gave the parcels, exactly
+    const bool localGas = DEMCloudDetail::localGasTemperature(this->mesh());
     const diffusionSmoother& smoother = DEMCloudDetail::smoother(this->mesh());
     const volScalarField& hs = this->thermo().thermo().he();
     const volScalarField Cp(this->thermo().thermo().Cp());
     const scalarField dTg
     (
-        smoother.smooth<scalar>
-        (
-            (hs.primitiveField() - hs.oldTime().primitiveField())
-           /Cp.primitiveField(),
-            "cloudHeatGather"
-        )
+        (hs.primitiveField() - hs.oldTime().primitiveField())
+       /Cp.primitiveField()
+    );
+    const scalarField Tg
+    (
+        localGas
+      ? smoother.smooth<scalar>(dTg, "cloudHeatGather")
+      : smoother.smooth<scalar>(gasT0_ + dTg, "cloudHeatGather")
     );
 
     for (parcelType& p : *this)
@@ -618,9 +634,11 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
         if (k >= 0 && k < heatFraction_.size() && heatFraction_[k] != 0)
         {
             // Conduction in the step moved p.T() on from heatFrom_
-            p.T() +=
-                heatFraction_[k]
-               *(heatGasAt_[k] + dTg[sourceCell_[k]] - heatFrom_[k]);
+            const scalar target =
+                localGas
+              ? heatGasAt_[k] + Tg[sourceCell_[k]]
+              : Tg[sourceCell_[k]];
+            p.T() += heatFraction_[k]*(target - heatFrom_[k]);
         }
     }
 }
