@@ -60,21 +60,18 @@ bool Foam::functionObjects::wallHeatFlow::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
+    // The patches in the order named (each name must match one), or every
+    // wall patch
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     if (dict.found("patches"))
     {
-        const wordRes names(dict.get<wordRes>("patches"));
         DynamicList<label> ids;
-        for (const wordRe& name : names)
+        for (const wordRe& name : dict.get<wordRes>("patches"))
         {
-            DynamicList<label> matched;
-            forAll(pbm, patchi)
-            {
-                if (name.match(pbm[patchi].name()))
-                {
-                    matched.append(patchi);
-                }
-            }
+            const labelList matched
+            (
+                pbm.patchSet(wordReList(1, name), false).sortedToc()
+            );
             if (matched.empty())
             {
                 FatalIOErrorInFunction(dict)
@@ -94,15 +91,7 @@ bool Foam::functionObjects::wallHeatFlow::read(const dictionary& dict)
     }
     else
     {
-        DynamicList<label> ids;
-        forAll(pbm, patchi)
-        {
-            if (isA<wallPolyPatch>(pbm[patchi]))
-            {
-                ids.append(patchi);
-            }
-        }
-        patches_.transfer(ids);
+        patches_ = pbm.findPatchIDs<wallPolyPatch>().sortedToc();
     }
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
@@ -110,25 +99,6 @@ bool Foam::functionObjects::wallHeatFlow::read(const dictionary& dict)
     alphaEffName_ = dict.lookupOrDefault<word>("alphaEff", "alphaEff");
 
     return true;
-}
-
-
-Foam::scalar Foam::functionObjects::wallHeatFlow::gasHeatFlow
-(
-    const label patchi
-) const
-{
-    const volScalarField& h = lookupObject<volScalarField>(hName_);
-    const volScalarField& alphaEff =
-        lookupObject<volScalarField>(alphaEffName_);
-
-    // The face normal points out of the domain: into the domain is
-    // alphaEff (h_face - h_cell) deltaCoeff |Sf| = alphaEff dh/dn |Sf|
-    return gSum
-    (
-        alphaEff.boundaryField()[patchi]*h.boundaryField()[patchi].snGrad()
-       *mesh_.magSf().boundaryField()[patchi]
-    );
 }
 
 
@@ -142,15 +112,25 @@ bool Foam::functionObjects::wallHeatFlow::write()
 {
     const scalar dt = mesh_.time().deltaTValue();
     const basicSinterCloud* cloudPtr = findSinterCloud(mesh_, cloudName_);
+    const volScalarField& h = lookupObject<volScalarField>(hName_);
+    const volScalarField& alphaEff =
+        lookupObject<volScalarField>(alphaEffName_);
 
     List<scalar> Qgas(patches_.size());
     List<scalar> Qp(patches_.size(), scalar(0));
     forAll(patches_, i)
     {
-        Qgas[i] = gasHeatFlow(patches_[i]);
+        // Into the domain (the face normal points out of it):
+        // alphaEff (h_face - h_cell) deltaCoeff |Sf| = alphaEff dh/dn |Sf|
+        const label patchi = patches_[i];
+        Qgas[i] = gSum
+        (
+            alphaEff.boundaryField()[patchi]*h.boundaryField()[patchi].snGrad()
+           *mesh_.magSf().boundaryField()[patchi]
+        );
         if (cloudPtr)
         {
-            Qp[i] = cloudPtr->conductedWallHeat(patches_[i])/dt;
+            Qp[i] = cloudPtr->conductedWallHeat(patchi)/dt;
         }
     }
     Pstream::listCombineGather(Qp, plusEqOp<scalar>());

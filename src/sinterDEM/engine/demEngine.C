@@ -125,7 +125,6 @@ Foam::demEngine::demEngine
     lastPairs_(0),
     lastWalls_(0),
     nBuilds_(0),
-    wallHeat_(0),
     spatialSort_(false),
     movedValid_(false),
     recordIndexValid_(false)
@@ -738,8 +737,6 @@ void Foam::demEngine::beginStep()
         halo_->update(particles_, nLocal_, true);
     }
     rebuildRequested_ = false;
-    wallHeat_ = 0;
-    wallFaceHeat_.setSize(walls_.size());
     wallFaceHeat_ = 0;
 
     vector* __restrict__ Jd = particles_.dragImpulse.data();
@@ -823,12 +820,10 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
             heatFlow_ = 0;
             scalar* __restrict__ Q = heatFlow_.data();
             conduction_.pairs(P, pairs_, Q);
-            wallHeat_ +=
-                deltaT
-               *conduction_.walls
-                (
-                    P, wallContacts_, walls_, Q, deltaT, wallFaceHeat_.data()
-                );
+            conduction_.walls
+            (
+                P, wallContacts_, walls_, Q, deltaT, wallFaceHeat_.data()
+            );
             conduction_.heat(P, nL, Q, deltaT);
         }
     }

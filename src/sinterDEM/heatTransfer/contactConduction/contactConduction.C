@@ -148,7 +148,7 @@ void Foam::contactConduction::pairs
 }
 
 
-Foam::scalar Foam::contactConduction::walls
+void Foam::contactConduction::walls
 (
     const demParticles& P,
     const contactList& C,
@@ -171,7 +171,6 @@ Foam::scalar Foam::contactConduction::walls
     const bool direct = direct_->active();
     const bool indirect = indirect_->active();
 
-    scalar total = 0;
     const label n = C.size();
     for (label k = 0; k < n; ++k)
     {
@@ -196,9 +195,7 @@ Foam::scalar Foam::contactConduction::walls
         const scalar q = wallFactor_*G*(Tw[face[k]] - T[i]);
         Q[i] += q;
         faceHeat[face[k]] += deltaT*q;
-        total += q;
     }
-    return total;
 }
 
 
