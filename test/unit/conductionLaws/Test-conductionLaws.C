@@ -21,10 +21,19 @@ Description
       relative 1e-8; zero outside the lens; continuous where the cases
       meet (gap = s, gap = 0), relative 1e-9; two equal particles against
       a quadrature of the gas between them (2 l thick, at least s),
-      relative 1e-8, unequal ones as the equal pair of the same r*.
+      relative 1e-8, unequal ones as the equal pair of the same r*;
+    - lensSolidSeries (the lens with the particle's solid in series): the
+      closed form against a quadrature of its integral at k_s/k_f = 54
+      (glass in air), 5, 1.0005 (its series branch) and 0.5, from a gap of
+      0.3 r_p to an overlap, relative 1e-8; k_s = k_f against the slab
+      (r_out^2 - r_in^2)/(2 D), relative 1e-12; k_s -> infinity against
+      Rong-Horio where its gap exceeds s, relative 1e-9; continuous across
+      its switch to the series, relative 1e-9; finite at contact; two
+      equal particles against a quadrature of the tube through both,
+      relative 1e-8.
 
     Run with -bad KEY to check a bad-input error instead (direct,
-    lensRadius, minimumDistance).
+    lensRadius, minimumDistance, solidLensRadius, missingIndirect).
 */
 
 #include "argList.H"
@@ -32,6 +41,7 @@ Description
 #include "conductionGeometry.H"
 #include "directConduction.H"
 #include "RongHorio.H"
+#include "lensSolidSeries.H"
 #include "IOstreams.H"
 #include "mathematicalConstants.H"
 
@@ -81,13 +91,21 @@ int main(int argc, char *argv[])
         const word key(args.get<word>("bad"));
         dictionary dict;
         dict.add("direct", key == "direct" ? "Batchelor" : "BatchelorOBrien");
-        dict.add("indirect", "RongHorio");
+        dict.add
+        (
+            "indirect",
+            key == "solidLensRadius" ? "lensSolidSeries"
+          : key == "missingIndirect" ? "RongHorios" : "RongHorio"
+        );
         dictionary coeffs;
         coeffs.add("lensRadius", key == "lensRadius" ? 0.9 : 1.4);
         coeffs.add("minimumDistance", key == "minimumDistance" ? 0.0 : 1e-7);
         dict.add("RongHorioCoeffs", coeffs);
+        dictionary solidCoeffs;
+        solidCoeffs.add("lensRadius", 1.0);
+        dict.add("lensSolidSeriesCoeffs", solidCoeffs);
         directConduction::New(dict);
-        indirectConduction::New(dict);
+        indirectConduction::New(dict, 1.4);
         return 0;
     }
 
@@ -165,7 +183,7 @@ int main(int argc, char *argv[])
         coeffs.add("lensRadius", 1.4);
         coeffs.add("minimumDistance", 1e-7);
         dict.add("RongHorioCoeffs", coeffs);
-        autoPtr<indirectConduction> base(indirectConduction::New(dict));
+        autoPtr<indirectConduction> base(indirectConduction::New(dict, 0));
         const auto& law =
             dynamic_cast<const indirectConductions::RongHorio&>(base());
         const scalar s = law.minimumDistance();
@@ -278,6 +296,169 @@ int main(int argc, char *argv[])
                 << " r_p: m c_p/G = "
                 << mcp/law.wallConductance(0.026, r, f*r) << " s" << nl;
         }
+    }
+
+    // The lens with the particle's solid in series against a quadrature
+    {
+        const scalar kf = 0.0257;
+        const scalar lens = 1.2;
+        const scalar rLens = lens*r;
+
+        // G/(2 pi k_f) = int r dr/(k_f u/k_s + D - u), Simpson in r, split
+        // where the solid and the gas resist alike near contact
+        auto quadrature = [&](const scalar ks, const scalar gap)
+        {
+            const scalar D = r + gap;
+            if (!(D < rLens))
+            {
+                return scalar(0);
+            }
+            const scalar rOut = min(std::sqrt(rLens*rLens - D*D), r);
+            const scalar rIn = gap < 0 ? std::sqrt(r*r - D*D) : 0;
+            auto f = [&](const scalar x)
+            {
+                const scalar u = std::sqrt(max(r*r - x*x, scalar(0)));
+                return x/(kf/ks*u + D - u);
+            };
+            auto simpsonF = [&](const scalar a, const scalar b, const label n)
+            {
+                const scalar h = (b - a)/n;
+                scalar sum = f(a) + f(b);
+                for (label i = 1; i < n; ++i)
+                {
+                    sum += (i % 2 ? 4 : 2)*f(a + i*h);
+                }
+                return sum*h/3;
+            };
+            const scalar rMid = min(rIn + 0.05*r, rOut);
+            return simpsonF(rIn, rMid, 200000) + simpsonF(rMid, rOut, 200000);
+        };
+
+        const scalar gaps[] =
+            {0.3*r, 0.05*r, 0.002*r, 1e-7, 0, -0.002*r, -0.02*r};
+        for (const scalar ratio : {54.0, 5.0, 1.0005, 0.5})
+        {
+            const scalar beta = 1 - 1/ratio;
+            for (const scalar g : gaps)
+            {
+                check
+                (
+                    "lensSolidSeries, k_s/k_f " + Foam::name(ratio)
+                  + ", gap " + Foam::name(g) + " m: closed form against"
+                    " quadrature",
+                    indirectConductions::lensSolidSeries::integral
+                    (
+                        r, g, lens, beta
+                    ),
+                    quadrature(kf*ratio, g),
+                    1e-8
+                );
+            }
+        }
+        for (const scalar g : {0.05*r, 0.0, -0.02*r})
+        {
+            const scalar D = r + g;
+            const scalar rOut = std::sqrt(rLens*rLens - D*D);
+            const scalar rIn = g < 0 ? std::sqrt(r*r - D*D) : 0;
+            check
+            (
+                "lensSolidSeries, k_s = k_f, gap " + Foam::name(g)
+              + " m: the slab (r_out^2 - r_in^2)/(2 D)",
+                indirectConductions::lensSolidSeries::integral(r, g, lens, 0),
+                (rOut*rOut - rIn*rIn)/(2*D),
+                1e-12
+            );
+        }
+        for (const scalar g : {0.3*r, 0.05*r, 0.002*r})
+        {
+            check
+            (
+                "lensSolidSeries, k_s -> infinity, gap " + Foam::name(g)
+              + " m: Rong-Horio (gap > s)",
+                indirectConductions::lensSolidSeries::integral
+                (
+                    r, g, lens, 1 - 1e-14
+                ),
+                indirectConductions::RongHorio::integral(r, g, lens, 1e-9),
+                1e-9
+            );
+        }
+        for (const scalar g : {0.002*r, -0.002*r})
+        {
+            check
+            (
+                "lensSolidSeries continuous at its series switch, gap "
+              + Foam::name(g) + " m",
+                indirectConductions::lensSolidSeries::integral
+                (
+                    r, g, lens, 1e-3*(1 + 1e-9)
+                ),
+                indirectConductions::lensSolidSeries::integral
+                (
+                    r, g, lens, 1e-3*(1 - 1e-9)
+                ),
+                1e-9
+            );
+        }
+
+        dictionary dict;
+        dict.add("indirect", "lensSolidSeries");
+        dictionary coeffs;
+        coeffs.add("lensRadius", lens);
+        dict.add("lensSolidSeriesCoeffs", coeffs);
+        const scalar ks = 54*kf;
+        autoPtr<indirectConduction> law(indirectConduction::New(dict, ks));
+        const scalar G0 = law->wallConductance(kf, r, 0);
+        check
+        (
+            "lensSolidSeries finite and positive at contact (wall)",
+            scalar(std::isfinite(G0) && G0 > 0), 1, 0
+        );
+        check
+        (
+            "lensSolidSeries wall conductance = 2 pi k_f x integral",
+            G0,
+            2*constant::mathematical::pi*kf
+           *indirectConductions::lensSolidSeries::integral
+            (
+                r, 0, lens, 1 - kf/ks
+            ),
+            1e-14
+        );
+        check
+        (
+            "lensSolidSeries zero beyond the lens",
+            law->wallConductance(kf, r, 0.21*r), 0, 0
+        );
+
+        // Two equal spheres at gap g: each tube crosses both solids (u
+        // each) and the gas between them (g + 2 (r - u)):
+        // 2 pi int x dx/(2 u/k_s + (2 D - 2 u)/k_f), D = r + g/2
+        auto pairQuadrature = [&](const scalar g)
+        {
+            return
+                2*constant::mathematical::pi*kf*0.5*quadrature(ks, 0.5*g);
+        };
+        for (const scalar g : {0.3*r, 0.05*r, 0.0, -0.002*r})
+        {
+            check
+            (
+                "lensSolidSeries, two equal particles at gap "
+              + Foam::name(g) + " m: against quadrature",
+                law->pairConductance(kf, r, r, g), pairQuadrature(g), 1e-8
+            );
+        }
+        check
+        (
+            "lensSolidSeries, unequal particles take the equal pair of r*",
+            law->pairConductance(kf, r, 3*r, 0.01*r),
+            law->pairConductance(kf, 1.5*r, 1.5*r, 0.01*r), 1e-14
+        );
+
+        // For the record: two touching 1 mm glass beads in air
+        Info<< "for the record: two touching 1 mm glass beads in air (k_s/k_f"
+            << " 54), lensRadius 1.2: G = " << law->pairConductance(kf, r, r, 0)
+            << " W/K" << nl;
     }
 
     Info<< nl << (unitTest::nFailed() ? "FAILED: " : "passed: ") << unitTest::nFailed()

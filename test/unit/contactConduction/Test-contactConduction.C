@@ -236,7 +236,7 @@ void caseWall(const bool direct)
             2.0/3.0
         );
 
-    const indirectConductions::RongHorio lens(lensDict());
+    const indirectConductions::RongHorio lens(lensDict(), 0);
 
     // Positive: overlap; negative: gap (in units of r)
     const List<scalar> overlaps =
@@ -337,7 +337,7 @@ void casePairDirect()
 
 void casePairIndirect()
 {
-    const indirectConductions::RongHorio lens(lensDict());
+    const indirectConductions::RongHorio lens(lensDict(), 0);
 
     // Surface gaps (in units of r): no contact, no force: they stay
     for (const scalar f : {0.4, 0.04, 0.0004})

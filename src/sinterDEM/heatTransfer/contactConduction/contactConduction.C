@@ -34,6 +34,27 @@ Foam::dictionary conductionDict
     return d;
 }
 
+
+//- The particles' solid conductivity for the indirect law (0 when the
+//  engine has no indirect conduction: its material need not give one)
+Foam::scalar particleConductivity
+(
+    const Foam::dictionary& conduction,
+    const Foam::contactMaterials& materials
+)
+{
+    using namespace Foam;
+    if (conduction.lookupOrDefault<word>("indirect", "none") == "none")
+    {
+        return 0;
+    }
+    return
+        contactMaterials::positive
+        (
+            materials.particleDict(), "thermalConductivity"
+        );
+}
+
 } // End anonymous namespace
 
 
@@ -48,7 +69,14 @@ Foam::contactConduction::contactConduction
     direct_(directConduction::New(conductionDict(engineDict, coarseGrainFactor))),
     indirect_
     (
-        indirectConduction::New(conductionDict(engineDict, coarseGrainFactor))
+        indirectConduction::New
+        (
+            conductionDict(engineDict, coarseGrainFactor),
+            particleConductivity
+            (
+                conductionDict(engineDict, coarseGrainFactor), materials
+            )
+        )
     ),
     cp_(0),
     gPP_(0),

@@ -41,9 +41,13 @@ Foam::scalar layerIntegral
 } // End anonymous namespace
 
 
-Foam::indirectConductions::RongHorio::RongHorio(const dictionary& dict)
+Foam::indirectConductions::RongHorio::RongHorio
+(
+    const dictionary& dict,
+    const scalar ks
+)
 :
-    indirectConduction(dict),
+    indirectConduction(dict, ks),
     lensRadius_
     (
         dict.optionalSubDict(typeName + "Coeffs")

@@ -20,7 +20,8 @@ namespace Foam
 
 Foam::autoPtr<Foam::indirectConduction> Foam::indirectConduction::New
 (
-    const dictionary& dict
+    const dictionary& dict,
+    const scalar ks
 )
 {
     const word name(dict.get<word>("indirect"));
@@ -38,5 +39,5 @@ Foam::autoPtr<Foam::indirectConduction> Foam::indirectConduction::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<indirectConduction>(cstrIter()(dict));
+    return autoPtr<indirectConduction>(cstrIter()(dict, ks));
 }
