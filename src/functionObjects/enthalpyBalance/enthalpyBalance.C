@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "enthalpyBalance.H"
+#include "gasConduction.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "addToRunTimeSelectionTable.H"
@@ -129,14 +130,10 @@ Foam::scalar Foam::functionObjects::enthalpyBalance::outflowRate() const
         // Convected out
         rate += sum(phi.boundaryField()[patchi]*hp);
 
-        // Conducted out: -alphaEff dh/dn |Sf|
+        // Conducted out
         if (alphaEffPtr)
         {
-            rate -= sum
-            (
-                alphaEffPtr->boundaryField()[patchi]*hp.snGrad()
-               *mesh_.magSf().boundaryField()[patchi]
-            );
+            rate -= gasConductionIn(*alphaEffPtr, h, patchi);
         }
     }
     return returnReduce(rate, sumOp<scalar>());

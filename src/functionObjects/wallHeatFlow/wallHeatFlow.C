@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "wallHeatFlow.H"
+#include "gasConduction.H"
 #include "volFields.H"
 #include "wallPolyPatch.H"
 #include "addToRunTimeSelectionTable.H"
@@ -120,13 +121,10 @@ bool Foam::functionObjects::wallHeatFlow::write()
     List<scalar> Qp(patches_.size(), scalar(0));
     forAll(patches_, i)
     {
-        // Into the domain (the face normal points out of it):
-        // alphaEff (h_face - h_cell) deltaCoeff |Sf| = alphaEff dh/dn |Sf|
         const label patchi = patches_[i];
-        Qgas[i] = gSum
+        Qgas[i] = returnReduce
         (
-            alphaEff.boundaryField()[patchi]*h.boundaryField()[patchi].snGrad()
-           *mesh_.magSf().boundaryField()[patchi]
+            gasConductionIn(alphaEff, h, patchi), sumOp<scalar>()
         );
         if (cloudPtr)
         {
