@@ -31,31 +31,6 @@ namespace DEMCloudDetail
         return Coupling::New(mesh).localGasTemperature();
     }
 
-    //- The limiter lambda in [0, 1] of a cell's gradient offsets: the
-    //  largest for which mean - lambda offset lies in [lo, hi], given
-    //  mean in [lo, hi]
-    inline scalar gradientLimiter
-    (
-        const scalar mean,
-        const scalar offset,
-        const scalar lo,
-        const scalar hi
-    )
-    {
-        // (mean may lie outside [lo, hi] by a rounding: then with no
-        // offset towards it the limiter is 1)
-        const scalar target = mean - offset;
-        if (target < lo && offset > 0)
-        {
-            return max(scalar(0), min(scalar(1), (mean - lo)/offset));
-        }
-        if (target > hi && offset < 0)
-        {
-            return max(scalar(0), min(scalar(1), (mean - hi)/offset));
-        }
-        return 1;
-    }
-
     //- The gradient of a cell field, limited so that the value it moves
     //  to a cell's faces stays within the cell's and its neighbours' values
     //  (cellLimited Gauss linear 1, whatever fvSchemes says)
@@ -365,7 +340,6 @@ void Foam::DEMCloud<CloudType>::motion
     const bool localGas =
         implicitHeat && DEMCloudDetail::localGasTemperature(this->mesh());
     vectorField gasGradT0;
-    scalarField cellK, cellTMin, cellTMax;
     if (implicitHeat)
     {
         // The gas temperature at the start and the sum of m c_p f T_p of
@@ -380,9 +354,6 @@ void Foam::DEMCloud<CloudType>::motion
             gasGradT0 = DEMCloudDetail::limitedGrad(this->thermo().thermo().T());
             heatGas_.setSize(this->mesh().nCells());
             heatGas_ = 0;
-            cellK.setSize(this->mesh().nCells(), 0);
-            cellTMin.setSize(this->mesh().nCells(), GREAT);
-            cellTMax.setSize(this->mesh().nCells(), -GREAT);
         }
     }
     const vectorField& cellCentres = this->mesh().C().primitiveField();
@@ -421,13 +392,12 @@ void Foam::DEMCloud<CloudType>::motion
         // the start, the parcel following the gathered gas temperature
         // after the gas is solved (correctHeatExchange)
         scalar dhsTrans, hAdt;
-        // (local: here the gradient's part only, T_g^0(x_p) - T_g^0, until
-        // its cell's limiter is known, below)
         const scalar Tn = p.T();
         const scalar TgAt =
             localGas
-          ? (gasGradT0[celli] & (p.position() - cellCentres[celli]))
-          : implicitHeat ? gasT0_[celli] : 0;
+          ? gasT0_[p.cell()]
+          + (gasGradT0[p.cell()] & (p.position() - cellCentres[p.cell()]))
+          : implicitHeat ? gasT0_[p.cell()] : 0;
         const scalar Tconv = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
         const scalar mCp = m*p.Cp();
         const scalar fraction =
@@ -448,9 +418,6 @@ void Foam::DEMCloud<CloudType>::motion
                 if (localGas)
                 {
                     heatGas_[celli] += np*mCp*fraction*TgAt;
-                    cellK[celli] += np*mCp*fraction;
-                    cellTMin[celli] = min(cellTMin[celli], Tn);
-                    cellTMax[celli] = max(cellTMax[celli], Tn);
                 }
             }
             else
@@ -475,45 +442,6 @@ void Foam::DEMCloud<CloudType>::motion
         heatFraction_[n] = fraction;
         heatFrom_[n] = Tn;
         heatGasAt_[n] = TgAt;
-    }
-
-    // With local, each cell's limiter lambda in [0, 1] on the gradient's
-    // part: the temperature its gas relaxes towards, the parcels' mean
-    // less lambda times their mean gradient offset, stays within its
-    // parcels' and its gas's temperatures (1 where it does already, as
-    // in a bed at equilibrium with its gas)
-    if (localGas && coupled)
-    {
-        scalarField lambda(cellK.size(), 1);
-        forAll(cellK, c)
-        {
-            if (cellK[c] > 0)
-            {
-                lambda[c] =
-                    DEMCloudDetail::gradientLimiter
-                    (
-                        heatTarget_[c]/cellK[c],
-                        heatGas_[c]/cellK[c],
-                        min(gasT0_[c], cellTMin[c]),
-                        max(gasT0_[c], cellTMax[c])
-                    );
-                heatGas_[c] = cellK[c]*gasT0_[c] + lambda[c]*heatGas_[c];
-            }
-        }
-        for (const parcelType& p : cloud)
-        {
-            const label n = p.demIndex();
-            const label c = sourceCell_[n];
-            heatGasAt_[n] = gasT0_[c] + lambda[c]*heatGasAt_[n];
-        }
-    }
-    else if (localGas)
-    {
-        for (const parcelType& p : cloud)
-        {
-            const label n = p.demIndex();
-            heatGasAt_[n] += gasT0_[sourceCell_[n]];
-        }
     }
 
     // 3. The DEM sub-steps
