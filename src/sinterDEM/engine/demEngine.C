@@ -1026,3 +1026,58 @@ Foam::label Foam::demEngine::nBridgedContacts() const
     }
     return count;
 }
+
+
+Foam::contactGraphComponents Foam::demEngine::agglomerates
+(
+    const scalar minDuration,
+    const bool bridgedOnly
+) const
+{
+    if (!listsValid_)
+    {
+        FatalErrorInFunction
+            << "The contact lists are not valid: agglomerates are taken"
+            << " after a step" << abort(FatalError);
+    }
+    const label b = cohesion_->bridgeSlot();
+    if (bridgedOnly && b < 0)
+    {
+        FatalErrorInFunction
+            << "Bridged agglomerates need a cohesion model with bridges,"
+            << " not " << cohesion_->type() << exit(FatalError);
+    }
+
+    const label dur = durationSlot_;
+    DynamicList<label> first(pairs_.size()/2);
+    DynamicList<label> second(pairs_.size()/2);
+    for (label k = 0; k < pairs_.size(); ++k)
+    {
+        const scalar* s = pairs_.stateOf(k);
+        if
+        (
+            s[dur] > 0 && s[dur] >= minDuration
+         && (!bridgedOnly || s[b] > 0)
+        )
+        {
+            first.append(pairs_.first[k]);
+            second.append(pairs_.second[k]);
+        }
+    }
+
+    const label nL = nLocal();
+    boolList shared;
+    if (halo_.valid())
+    {
+        shared.setSize(nL, false);
+        halo_->markSent(shared);
+    }
+    return contactGraphComponents
+    (
+        SubList<demIdentity>(particles_.identity, particles_.identity.size()),
+        nL,
+        first,
+        second,
+        shared
+    );
+}
