@@ -18,6 +18,7 @@ import struct
 import sys
 from pathlib import Path
 
+sys.dont_write_bytecode = True   # no __pycache__ beside the test
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from check import mean_T, at  # noqa: E402
 

@@ -1074,10 +1074,6 @@ Foam::contactGraphComponents Foam::demEngine::agglomerates
     }
     return contactGraphComponents
     (
-        SubList<demIdentity>(particles_.identity, particles_.identity.size()),
-        nL,
-        first,
-        second,
-        shared
+        particles_.identity, nL, first, second, shared
     );
 }

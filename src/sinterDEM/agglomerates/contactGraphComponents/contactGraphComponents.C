@@ -134,22 +134,23 @@ Foam::contactGraphComponents::contactGraphComponents
     List<List<demIdentity>> sent(Pstream::nProcs());
     {
         DynamicList<demIdentity> mine;
+        for (label v = 0; v < nVertices; ++v)
+        {
+            // Each part once, at its root
+            if (sets.find(v) == v && partCount[v] > 0 && partBoundary[v])
+            {
+                mine.append(partTag);
+                mine.append(partLabel[v]);
+                mine.append(partCount[v]);
+            }
+        }
         for (label i = 0; i < nLocal; ++i)
         {
-            const label r = sets.find(i);
-            if (partBoundary[r] && sets.find(r) == r && partCount[r] > 0)
-            {
-                // Each part once: at its root, marked done by the count
-                mine.append(partTag);
-                mine.append(partLabel[r]);
-                mine.append(partCount[r]);
-                partCount[r] = -partCount[r];
-            }
             if (shared.size() && shared[i])
             {
                 mine.append(sharedTag);
                 mine.append(identity[i]);
-                mine.append(partLabel[r]);
+                mine.append(partLabel[sets.find(i)]);
             }
         }
         for (label g = nLocal; g < nVertices; ++g)

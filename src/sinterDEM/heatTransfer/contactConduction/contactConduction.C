@@ -39,12 +39,19 @@ Foam::dictionary conductionDict
 //  engine has no indirect conduction: its material need not give one)
 Foam::scalar particleConductivity
 (
-    const Foam::dictionary& conduction,
+    const Foam::dictionary& engineDict,
     const Foam::contactMaterials& materials
 )
 {
     using namespace Foam;
-    if (conduction.lookupOrDefault<word>("indirect", "none") == "none")
+    if
+    (
+        !engineDict.isDict("conduction")
+     || engineDict.subDict("conduction").lookupOrDefault<word>
+        (
+            "indirect", "none"
+        ) == "none"
+    )
     {
         return 0;
     }
@@ -72,10 +79,7 @@ Foam::contactConduction::contactConduction
         indirectConduction::New
         (
             conductionDict(engineDict, coarseGrainFactor),
-            particleConductivity
-            (
-                conductionDict(engineDict, coarseGrainFactor), materials
-            )
+            particleConductivity(engineDict, materials)
         )
     ),
     cp_(0),

@@ -47,28 +47,16 @@ Foam::indirectConductions::RongHorio::RongHorio
     const scalar ks
 )
 :
-    indirectConduction(dict, ks),
-    lensRadius_
-    (
-        dict.optionalSubDict(typeName + "Coeffs")
-            .lookupOrDefault<scalar>("lensRadius", 1.4)
-    ),
+    gasLens(dict, ks, typeName),
     s_
     (
         dict.optionalSubDict(typeName + "Coeffs")
             .get<scalar>("minimumDistance")
     )
 {
-    const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-    if (!(lensRadius_ > 1))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Keyword lensRadius in " << coeffs.name() << " is r_lens/r_p"
-            << " and must be > 1 (the lens surrounds the particle), not "
-            << lensRadius_ << exit(FatalIOError);
-    }
     if (!(s_ > 0))
     {
+        const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
         FatalIOErrorInFunction(coeffs)
             << "Keyword minimumDistance in " << coeffs.name() << " is the"
             << " minimum conduction distance s [m] and must be > 0, not "
@@ -131,9 +119,9 @@ Foam::scalar Foam::indirectConductions::RongHorio::pairConductance
     const scalar gap
 ) const
 {
-    // Each sphere to the mid plane at half the gap, in series
-    const scalar r = 2*ri*rj/(ri + rj);
+    // Each sphere of the equal pair to the mid plane at half the gap, in
+    // series
     return
         constant::mathematical::pi*kf
-       *integral(r, 0.5*gap, lensRadius_, 0.5*s_);
+       *integral(pairRadius(ri, rj), 0.5*gap, lensRadius(), 0.5*s_);
 }

@@ -22,22 +22,9 @@ Foam::indirectConductions::lensSolidSeries::lensSolidSeries
     const scalar ks
 )
 :
-    indirectConduction(dict, ks),
-    lensRadius_
-    (
-        dict.optionalSubDict(typeName + "Coeffs")
-            .lookupOrDefault<scalar>("lensRadius", 1.4)
-    ),
+    gasLens(dict, ks, typeName),
     ks_(ks)
 {
-    const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-    if (!(lensRadius_ > 1))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Keyword lensRadius in " << coeffs.name() << " is r_lens/r_p"
-            << " and must be > 1 (the lens surrounds the particle), not "
-            << lensRadius_ << exit(FatalIOError);
-    }
     if (!(ks_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -110,7 +97,7 @@ Foam::scalar Foam::indirectConductions::lensSolidSeries::wallConductance
 {
     return
         2*constant::mathematical::pi*kf
-       *integral(r, gap, lensRadius_, 1 - kf/ks_);
+       *integral(r, gap, lensRadius(), 1 - kf/ks_);
 }
 
 
@@ -122,9 +109,9 @@ Foam::scalar Foam::indirectConductions::lensSolidSeries::pairConductance
     const scalar gap
 ) const
 {
-    // Each sphere to the mid plane at half the gap, in series
-    const scalar r = 2*ri*rj/(ri + rj);
+    // Each sphere of the equal pair to the mid plane at half the gap, in
+    // series
     return
         constant::mathematical::pi*kf
-       *integral(r, 0.5*gap, lensRadius_, 1 - kf/ks_);
+       *integral(pairRadius(ri, rj), 0.5*gap, lensRadius(), 1 - kf/ks_);
 }
