@@ -1,0 +1,91 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""A case opens in ParaView's OpenFOAM reader with its parcels and their
+fields (run by pvpython; no display needed).
+
+    pvpython checkReader.py CASE TIME CLOUD FIELD...
+
+Requires, at TIME:
+  - the reader's lagrangian/CLOUD block holds as many parcels as the
+    cloud's own files (the count in TIME/lagrangian/CLOUD/d);
+  - every FIELD is an array of that block, one value per parcel;
+  - agglomerateId (if asked), d and T equal the cloud's files parcel by
+    parcel: exactly for labels, to 1e-6 relative for scalars (the reader
+    stores 32-bit floats, whose rounding is 6e-8 relative).
+"""
+import os
+import re
+import struct
+import sys
+
+from paraview import servermanager
+from paraview.simple import MergeBlocks, OpenFOAMReader
+
+
+def field(path, kind):
+    """A lagrangian field file: list of labels ('i') or scalars ('d')."""
+    raw = open(path, 'rb').read()
+    head_end = raw.index(b'}', raw.index(b'FoamFile')) + 1
+    binary = re.search(rb'format\s+binary', raw[:head_end]) is not None
+    conv = int if kind == 'i' else float
+    m = re.compile(rb'(\d+)\s*([({])').search(raw, head_end)
+    n = int(m.group(1))
+    if m.group(2) == b'{':      # a uniform list: N{value}
+        return [conv(raw[m.end():raw.index(b'}', m.end())])] * n
+    if binary:
+        size = 4 if kind == 'i' else 8
+        return list(struct.unpack(f'<{n}{kind}', raw[m.end():m.end() + size * n]))
+    return [conv(v) for v in raw[m.end():raw.index(b')', m.end())].split()]
+
+
+def main():
+    case, time, cloud, fields = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+    ok = True
+    foam = os.path.join(case, 'check.foam')
+    open(foam, 'w').close()
+    cdir = os.path.join(case, time, 'lagrangian', cloud)
+    n_cloud = len(field(os.path.join(cdir, 'd'), 'd'))
+
+    r = OpenFOAMReader(FileName=foam)
+    r.MeshRegions = ['lagrangian/' + cloud]
+    r.UpdatePipelineInformation()
+    r.LagrangianArrays = fields
+    merged = MergeBlocks(Input=r)
+    merged.UpdatePipeline(float(time))
+    data = servermanager.Fetch(merged)
+    n_reader = data.GetNumberOfPoints()
+    print(f'parcels: reader {n_reader}, cloud files {n_cloud}')
+    if n_reader != n_cloud or n_cloud == 0:
+        print('FAIL: the reader does not see the cloud\'s parcels')
+        ok = False
+
+    pd = data.GetPointData()
+    for f in fields:
+        arr = pd.GetArray(f)
+        if arr is None:
+            print(f'FAIL: no array {f} in the reader\'s cloud')
+            ok = False
+            continue
+        print(f'{f}: {arr.GetNumberOfTuples()} tuples of {arr.GetNumberOfComponents()}')
+        if arr.GetNumberOfTuples() != n_cloud:
+            print(f'FAIL: {f} has not one value per parcel')
+            ok = False
+            continue
+        kind = {'agglomerateId': 'i', 'd': 'd', 'T': 'd'}.get(f)
+        if kind is None:
+            continue
+        ref = field(os.path.join(cdir, f), kind)
+        got = [arr.GetValue(i) for i in range(n_cloud)]
+        if kind == 'i':
+            bad = sum(1 for a, b in zip(got, ref) if int(a) != b)
+        else:
+            bad = sum(1 for a, b in zip(got, ref)
+                      if abs(a - b) > 1e-6 * abs(b))
+        print(f'{f}: {bad} of {n_cloud} differ from the cloud\'s file')
+        if bad:
+            ok = False
+    os.remove(foam)
+    print('PASS' if ok else 'FAIL')
+    sys.exit(0 if ok else 1)
+
+
+main()
