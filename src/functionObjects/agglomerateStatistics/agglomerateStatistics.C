@@ -71,6 +71,13 @@ bool Foam::functionObjects::agglomerateStatistics::read
     writeFile::read(dict);
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
+    if (!requireSinterCloud(mesh_, dict).engine())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Cloud " << cloudName_ << " of " << name() << " has no DEM"
+            << " engine: agglomerates need collisionModel demCollision"
+            << exit(FatalIOError);
+    }
     minContactTime_ = dict.lookupOrDefault<scalar>("minContactTime", 0.01);
     minSize_ = dict.lookupOrDefault<label>("minSize", 5);
     bridgedOnly_ = dict.lookupOrDefault<Switch>("bridgedOnly", false);

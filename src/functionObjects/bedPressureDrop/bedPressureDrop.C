@@ -48,9 +48,18 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
     lowerPatch_(-1),
-    upperPatch_(-1)
+    upperPatch_(-1),
+    window_(0),
+    ratioBelow_(0),
+    stdBelow_(0),
+    duration_(0),
+    first_(0),
+    historyStart_(-1),
+    lookedSince_(-1),
+    defluidized_(false)
 {
     read(dict);
+    restoreState();
     if (!Pstream::master() || !writeToFile())
     {
         return;
@@ -61,6 +70,9 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     writeTabbed(file(), "W/A");
     writeTabbed(file(), "dp/(W/A)");
     writeTabbed(file(), "eps_bed");
+    writeTabbed(file(), "dp_mean");
+    writeTabbed(file(), "dp_std");
+    writeTabbed(file(), "defluidized");
     file() << endl;
 }
 
@@ -74,9 +86,105 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
     upperPatch_ = requiredPatch(mesh_, dict, "upperPatch");
     pName_ = dict.lookupOrDefault<word>("p", "p");
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
+    requireSinterCloud(mesh_, dict);
     voidageName_ = dict.lookupOrDefault<word>("voidage", "voidage");
 
+    window_ = positive(dict, "window", 0.2);
+    if (dict.found("defluidization") && !dict.isDict("defluidization"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword defluidization of " << name() << " must be a"
+            << " sub-dictionary of ratioBelow, stdBelow and duration"
+            << exit(FatalIOError);
+    }
+    const dictionary crit(dict.subOrEmptyDict("defluidization"));
+    ratioBelow_ = positive(crit, "ratioBelow", 0.8);
+    stdBelow_ = positive(crit, "stdBelow", 0.02);
+    duration_ = positive(crit, "duration", window_, true);
+
     return true;
+}
+
+
+Foam::scalar Foam::functionObjects::bedPressureDrop::positive
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar deflt,
+    const bool zeroAllowed
+)
+{
+    const scalar value = dict.lookupOrDefault<scalar>(key, deflt);
+    if (!(zeroAllowed ? value >= 0 : value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " in " << dict.name() << " must be "
+            << (zeroAllowed ? ">= 0" : "> 0") << ", not " << value
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+void Foam::functionObjects::bedPressureDrop::addSample
+(
+    const scalar t,
+    const scalar dp,
+    const scalar dt
+)
+{
+    if (historyStart_ < 0)
+    {
+        historyStart_ = t;
+    }
+    sampleTime_.append(t);
+    sampleDp_.append(dp);
+    while (t - sampleTime_[first_] >= window_ - 0.5*dt)
+    {
+        ++first_;
+    }
+
+    // Drop the old samples from the storage now and then
+    if (first_ > 1024 && 2*first_ > sampleTime_.size())
+    {
+        const label n = sampleTime_.size() - first_;
+        for (label i = 0; i < n; ++i)
+        {
+            sampleTime_[i] = sampleTime_[first_ + i];
+            sampleDp_[i] = sampleDp_[first_ + i];
+        }
+        sampleTime_.resize(n);
+        sampleDp_.resize(n);
+        first_ = 0;
+    }
+}
+
+
+void Foam::functionObjects::bedPressureDrop::storeState()
+{
+    const label n = sampleTime_.size() - first_;
+    setProperty("windowTimes", scalarList(SubList<scalar>(sampleTime_, n, first_)));
+    setProperty("windowDp", scalarList(SubList<scalar>(sampleDp_, n, first_)));
+    setProperty("historyStart", historyStart_);
+    setProperty("lookedDefluidizedSince", lookedSince_);
+    setProperty("defluidized", defluidized_);
+}
+
+
+void Foam::functionObjects::bedPressureDrop::restoreState()
+{
+    if (!foundProperty("windowTimes"))
+    {
+        return;
+    }
+    sampleTime_ = getProperty<scalarList>("windowTimes");
+    sampleDp_ = getProperty<scalarList>("windowDp");
+    first_ = 0;
+    historyStart_ = getProperty<scalar>("historyStart");
+    lookedSince_ = getProperty<scalar>("lookedDefluidizedSince");
+    defluidized_ = getProperty<bool>("defluidized");
+    Info<< type() << ' ' << name() << ": continues its window of "
+        << sampleTime_.size() << " samples from the stored state" << endl;
 }
 
 
@@ -125,12 +233,72 @@ bool Foam::functionObjects::bedPressureDrop::write()
     const scalar area = gSum(mesh_.magSf().boundaryField()[lowerPatch_]);
     const scalar WbyA = g*mass/area;
 
+    // The moving window
+    const Time& time = mesh_.time();
+    const scalar t = time.value();
+    const scalar dt = time.deltaTValue();
+    addSample(t, dp, dt);
+    const label n = sampleTime_.size() - first_;
+    scalar mean = 0;
+    for (label i = first_; i < sampleDp_.size(); ++i)
+    {
+        mean += sampleDp_[i];
+    }
+    mean /= n;
+    scalar var = 0;
+    for (label i = first_; i < sampleDp_.size(); ++i)
+    {
+        var += sqr(sampleDp_[i] - mean);
+    }
+    const scalar stdDev = sqrt(var/n);
+
+    // The diagnosis
+    const bool full = t - historyStart_ >= window_ - 0.5*dt;
+    const bool looks =
+        full && WbyA > 0
+     && mean/WbyA < ratioBelow_ && stdDev/WbyA < stdBelow_;
+    if (!looks)
+    {
+        lookedSince_ = -1;
+        if (defluidized_)
+        {
+            defluidized_ = false;
+            Info<< type() << ' ' << name() << ": the bed is fluidized again"
+                << " at t = " << t << " s: over the last " << window_
+                << " s dp_mean/(W/A) = " << (WbyA > 0 ? mean/WbyA : 0)
+                << ", dp_std/(W/A) = " << (WbyA > 0 ? stdDev/WbyA : 0)
+                << endl;
+        }
+    }
+    else
+    {
+        if (lookedSince_ < 0)
+        {
+            lookedSince_ = t;
+        }
+        if (!defluidized_ && t - lookedSince_ >= duration_ - 0.5*dt)
+        {
+            defluidized_ = true;
+            Info<< type() << ' ' << name() << ": the bed defluidized at t = "
+                << t << " s: over the last " << window_ << " s dp_mean/(W/A) = "
+                << mean/WbyA << " < " << ratioBelow_ << " and dp_std/(W/A) = "
+                << stdDev/WbyA << " < " << stdBelow_ << " since t = "
+                << lookedSince_ << " s" << endl;
+        }
+    }
+
     if (Pstream::master() && writeToFile())
     {
         file()
-            << mesh_.time().timeName() << tab << dp << tab << WbyA << tab
+            << time.timeName() << tab << dp << tab << WbyA << tab
             << (WbyA > 0 ? dp/WbyA : 0) << tab
-            << (mass > 0 ? massVoidage/mass : 1) << endl;
+            << (mass > 0 ? massVoidage/mass : 1) << tab
+            << mean << tab << stdDev << tab << label(defluidized_) << endl;
+    }
+
+    if (time.writeTime())
+    {
+        storeState();
     }
 
     return true;

@@ -1,0 +1,115 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Checks of bedPressureDrop's window statistics and defluidization flag.
+
+    check.py window DAT WINDOW RATIO STD DURATION
+        dp_mean and dp_std of every row recomputed here from the dp column
+        over the samples t_i of the last WINDOW seconds (t - t_i < WINDOW
+        to half a step); dp_mean within 1e-9 relative, dp_std within
+        1e-7 dp_mean (the file prints dp to 11 digits); the flag of every
+        row equal to the rule applied here (window full, W/A > 0,
+        dp_mean/(W/A) < RATIO and dp_std/(W/A) < STD at every step for
+        DURATION seconds); the flag must trip, once.
+    check.py restart FULLDAT RESTARTDAT
+        every row of the restarted run equal to the uninterrupted run's: dp and dp_mean within 1e-9 relative, dp_std
+        within 1e-7 dp_mean, the flag the same.
+"""
+import sys
+
+import numpy as np
+
+
+def load(path):
+    rows = [[float(v) for v in line.split()] for line in open(path)
+            if line.strip() and not line.startswith('#')]
+    if not rows:
+        sys.exit(f'FAIL: no rows in {path}')
+    return np.array(rows)
+
+
+def window(path, win, ratio, stdmax, duration):
+    d = load(path)
+    t, dp, wa, mean_f, std_f, flag_f = d[:, 0], d[:, 1], d[:, 2], d[:, 5], d[:, 6], d[:, 7]
+    dt = t[1] - t[0]
+    ok = True
+    first = 0
+    since = None
+    flag = False
+    trips = []
+    bad_mean = bad_std = bad_flag = 0
+    for k in range(len(t)):
+        while t[k] - t[first] >= win - 0.5 * dt:
+            first += 1
+        w = dp[first:k + 1]
+        m = w.mean()
+        s = np.sqrt(((w - m) ** 2).mean())
+        if abs(m - mean_f[k]) > 1e-9 * abs(m):
+            bad_mean += 1
+        if abs(s - std_f[k]) > 1e-7 * abs(m):
+            bad_std += 1
+        full = t[k] - t[0] >= win - 0.5 * dt
+        looks = full and wa[k] > 0 and m / wa[k] < ratio and s / wa[k] < stdmax
+        if not looks:
+            since = None
+            flag = False
+        else:
+            if since is None:
+                since = t[k]
+            if not flag and t[k] - since >= duration - 0.5 * dt:
+                flag = True
+                trips.append((t[k], since, m / wa[k], s / wa[k]))
+        if int(flag) != int(flag_f[k]):
+            bad_flag += 1
+    print(f'{len(t)} rows: dp_mean off in {bad_mean}, dp_std off in {bad_std},'
+          f' flag off in {bad_flag}')
+    for tt, since, r, sr in trips:
+        print(f'flag trips at t = {tt:g} s (looked defluidized since {since:g} s;'
+              f' dp_mean/(W/A) {r:.4f}, dp_std/(W/A) {sr:.2e})')
+    written = [t[k] for k in range(1, len(t)) if flag_f[k] == 1 and flag_f[k - 1] == 0]
+    print(f'flag trips in the file at {written}')
+    if bad_mean or bad_std or bad_flag:
+        ok = False
+    if len(trips) != 1:
+        print(f'FAIL: expected the flag to trip once, not {len(trips)} times')
+        ok = False
+    return ok
+
+
+def restart(full_path, restart_path):
+    f = load(full_path)
+    r = load(restart_path)
+    by_time = {round(row[0], 9): row for row in f}
+    n = bad = 0
+    for row in r:
+        ref = by_time.get(round(row[0], 9))
+        if ref is None:
+            print(f'FAIL: time {row[0]} not in the full run')
+            return False
+        n += 1
+        m = abs(ref[5])
+        if (abs(row[1] - ref[1]) > 1e-9 * abs(ref[1])
+                or abs(row[5] - ref[5]) > 1e-9 * m
+                or abs(row[6] - ref[6]) > 1e-7 * m
+                or row[7] != ref[7]):
+            bad += 1
+            if bad <= 3:
+                print(f'differs at t = {row[0]}: restarted {row[1:]}, full {ref[1:]}')
+    print(f'restarted run from t = {r[0][0]}: {n} rows compared, {bad} differ;'
+          f' first row dp_mean {r[0][5]:.10g} (full run {by_time[round(r[0][0], 9)][5]:.10g}),'
+          f' dp {r[0][1]:.10g}')
+    return n > 0 and bad == 0
+
+
+def main():
+    mode = sys.argv[1]
+    if mode == 'window':
+        ok = window(sys.argv[2], *[float(v) for v in sys.argv[3:7]])
+    elif mode == 'restart':
+        ok = restart(sys.argv[2], sys.argv[3])
+    else:
+        sys.exit(f'check.py: unknown mode {mode}')
+    print('PASS' if ok else 'FAIL')
+    sys.exit(0 if ok else 1)
+
+
+main()
