@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "particleStatistics.H"
+#include "addToRunTimeSelectionTable.H"
+#include "findSinterCloud.H"
+#include "volFields.H"
+#include "OFstream.H"
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(particleStatistics, 0);
+    addToRunTimeSelectionTable(functionObject, particleStatistics, dictionary);
+}
+}
+
+
+// A keyword of a sub-dictionary that must be above a bound, or a fatal
+// error naming it
+template<class Type>
+static Type bounded
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Type deflt,
+    const Type lowerBound,
+    const bool inclusive
+)
+{
+    const Type value = dict.lookupOrDefault<Type>(key, deflt);
+    if (inclusive ? value < lowerBound : !(value > lowerBound))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " in " << dict.name() << " must be "
+            << (inclusive ? ">= " : "> ") << lowerBound << ", not " << value
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+
+Foam::functionObjects::particleStatistics::particleStatistics
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    speedMax_(1),
+    speedBins_(50),
+    Tmin_(273.15),
+    Tmax_(1473.15),
+    Tbins_(120)
+{
+    read(dict);
+
+    if (Pstream::master() && writeToFile())
+    {
+        writeHeader(file(), "Particle phase (temperatures in K)");
+        writeCommented(file(), "Time");
+        for
+        (
+            const char* c :
+            {
+                "parcels", "particles", "T_mean", "T_std", "T_min", "T_max",
+                "U_mean", "U_std", "U_max", "Theta_mean"
+            }
+        )
+        {
+            writeTabbed(file(), c);
+        }
+        file() << endl;
+    }
+}
+
+
+bool Foam::functionObjects::particleStatistics::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+
+    cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
+    requireSinterCloud(mesh_, dict);
+    if (!mesh_.foundObject<volScalarField>("granularTemperature"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Cloud " << cloudName_ << " of " << name() << " keeps no"
+            << " granularTemperature field: it needs collisionModel"
+            << " demCollision" << exit(FatalIOError);
+    }
+
+    const dictionary speed(dict.subOrEmptyDict("speedDistribution"));
+    speedMax_ = bounded<scalar>(speed, "max", 1, 0, false);
+    speedBins_ = bounded<label>(speed, "bins", 50, 1, true);
+
+    const dictionary T(dict.subOrEmptyDict("temperatureDistribution"));
+    Tmin_ = bounded<scalar>(T, "min", 273.15, 0, false);
+    Tmax_ = bounded<scalar>(T, "max", 1473.15, Tmin_, false);
+    Tbins_ = bounded<label>(T, "bins", 120, 1, true);
+
+    return true;
+}
+
+
+void Foam::functionObjects::particleStatistics::distributions
+(
+    binnedDistribution& speed,
+    binnedDistribution& T,
+    binnedDistribution& Tmass
+) const
+{
+    const basicSinterCloud& cloud =
+        *findSinterCloud(mesh_, cloudName_);
+
+    for (const basicSinterParcel& p : cloud)
+    {
+        const scalar n = p.nParticle();
+        speed.add(mag(p.U()), n);
+        T.add(p.T(), n);
+        Tmass.add(p.T(), n*p.mass());
+    }
+    speed.reduce();
+    T.reduce();
+    Tmass.reduce();
+    for (const basicSinterParcel& p : cloud)
+    {
+        const scalar n = p.nParticle();
+        speed.addSpread(mag(p.U()), n);
+        T.addSpread(p.T(), n);
+        Tmass.addSpread(p.T(), n*p.mass());
+    }
+    speed.reduceSpread();
+    T.reduceSpread();
+    Tmass.reduceSpread();
+}
+
+
+bool Foam::functionObjects::particleStatistics::execute()
+{
+    binnedDistribution speed(0, speedMax_, speedBins_);
+    binnedDistribution T(Tmin_, Tmax_, Tbins_);
+    binnedDistribution Tmass(Tmin_, Tmax_, Tbins_);
+    distributions(speed, T, Tmass);
+
+    // The granular temperature of the parcels' cells
+    const basicSinterCloud& cloud = *findSinterCloud(mesh_, cloudName_);
+    const volScalarField& Theta =
+        mesh_.lookupObject<volScalarField>("granularTemperature");
+    label parcels = 0;
+    scalar sumTheta = 0;
+    for (const basicSinterParcel& p : cloud)
+    {
+        ++parcels;
+        sumTheta += Theta[p.cell()];
+    }
+    reduce(parcels, sumOp<label>());
+    reduce(sumTheta, sumOp<scalar>());
+
+    if (Pstream::master() && writeToFile())
+    {
+        file()
+            << mesh_.time().timeName() << tab << parcels << tab
+            << speed.total() << tab << Tmass.mean() << tab << Tmass.stdDev()
+            << tab << Tmass.min() << tab << Tmass.max() << tab
+            << speed.mean() << tab << speed.stdDev() << tab << speed.max()
+            << tab << (parcels ? sumTheta/parcels : 0) << endl;
+    }
+    return true;
+}
+
+
+bool Foam::functionObjects::particleStatistics::write()
+{
+    binnedDistribution speed(0, speedMax_, speedBins_);
+    binnedDistribution T(Tmin_, Tmax_, Tbins_);
+    binnedDistribution Tmass(Tmin_, Tmax_, Tbins_);
+    distributions(speed, T, Tmass);
+
+    if (Pstream::master())
+    {
+        const fileName dir(baseFileDir()/name()/mesh_.time().timeName());
+        mkDir(dir);
+        OFstream speedFile(dir/"speedDistribution.dat");
+        speed.write(speedFile, "particle speed", "m/s");
+        OFstream Tfile(dir/"temperatureDistribution.dat");
+        T.write(Tfile, "particle temperature", "K");
+    }
+    return true;
+}
