@@ -3,6 +3,7 @@
 """Checks of the agglomerate statistics of the three columns (see ./run).
 
     check.py CASE [SERIALCASE]
+    check.py --bridged CASE
 """
 import re
 import struct
@@ -28,7 +29,39 @@ def label_field(path):
     return [int(v) for v in raw[m.end():raw.index(b')', m.end())].split()]
 
 
+def bridged(case):
+    """The plain count against the bridged-only one (run bridgedOnly)"""
+    n = 15
+    plain = {round(r[0], 9): r for r in rows(case)}
+    dat = case / 'postProcessing/bridged/0/agglomerateStatistics.dat'
+    brid = {round(float(line.split()[0]), 9): [float(v) for v in line.split()]
+            for line in dat.read_text().splitlines()
+            if line.strip() and not line.startswith('#')}
+    ok = True
+    two = lambda r: (r[1] == 2 and abs(r[2] - 11 / n) < 1e-12
+                     and abs(r[4] - 6 / n) < 1e-12 and abs(r[5] - 5.5) < 1e-12)
+    before = [t for t in brid if 0.02 - 1e-9 <= t < 0.025 - 1e-9]
+    bad = [t for t in before if not two(plain[t]) or brid[t][1] != 0]
+    print(f'{len(before)} evaluations in [0.02, 0.025) s (contacts older than'
+          f' 0.01 s, no bridge yet): plain count 2 (6 and 5), bridged count 0:'
+          f' {"ok" if before and not bad else "FAIL"}')
+    ok &= bool(before) and not bad
+    first = min((t for t in brid if brid[t][1] > 0), default=None)
+    print(f'first bridged agglomerate at t = {first} s (bridges from 0.025 s)')
+    after = [t for t in brid if t >= 0.026 - 1e-9]
+    bad = [t for t in after if not two(plain[t]) or not two(brid[t])]
+    print(f'{len(after)} evaluations from 0.026 s: both counts 2 agglomerates'
+          f' (6 and 5): {"ok" if after and not bad else "FAIL"}')
+    if bad:
+        print('  first off:', bad[0], plain[bad[0]], brid[bad[0]])
+    ok &= bool(after) and not bad
+    print('passed' if ok else 'FAIL')
+    return 0 if ok else 1
+
+
 def main():
+    if sys.argv[1] == '--bridged':
+        return bridged(Path(sys.argv[2]))
     case = Path(sys.argv[1])
     ok = True
     n = 15

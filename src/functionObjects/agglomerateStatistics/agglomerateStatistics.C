@@ -71,7 +71,8 @@ bool Foam::functionObjects::agglomerateStatistics::read
     writeFile::read(dict);
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
-    if (!requireSinterCloud(mesh_, dict).engine())
+    const demEngine* engine = requireSinterCloud(mesh_, dict).engine();
+    if (!engine)
     {
         FatalIOErrorInFunction(dict)
             << "Cloud " << cloudName_ << " of " << name() << " has no DEM"
@@ -95,6 +96,13 @@ bool Foam::functionObjects::agglomerateStatistics::read
             << "Keyword minSize of " << name() << " is the least number of"
             << " parcels of an agglomerate and must be >= 2, not "
             << minSize_ << exit(FatalIOError);
+    }
+    if (bridgedOnly_ && engine->cohesion().bridgeSlot() < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword bridgedOnly of " << name() << " needs a cohesion"
+            << " model with bridges (cohesionModel solidBridge), not "
+            << engine->cohesion().type() << exit(FatalIOError);
     }
     return true;
 }
