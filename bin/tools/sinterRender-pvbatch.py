@@ -16,15 +16,13 @@ ap.add_argument('--out', required=True)
 ap.add_argument('--size', nargs=2, type=int, required=True)
 ap.add_argument('--fields', nargs='+', required=True)
 ap.add_argument('--times', nargs='+', required=True)
-ap.add_argument('--decomposed', action='store_true')
 a = ap.parse_args()
 
-caseType = 'Decomposed Case' if a.decomposed else 'Reconstructed Case'
 
 
 def reader(regions):
     r = OpenFOAMReader(FileName=a.foam)
-    r.CaseType = caseType
+    r.CaseType = 'Reconstructed Case'
     r.MeshRegions = regions
     r.Createcelltopointfiltereddata = 0
     r.UpdatePipelineInformation()
