@@ -50,12 +50,12 @@ def serial(case):
         shared = z_up(t) < 6e-3            # each rising bead in its pair's cell
         expect = [t, 4, 4, 300, 0, 300, 300, 0.065, 0.025, 0.09,
                   theta_pair if shared else 0]
-        good = all(close(a, b) for a, b in zip(s, expect))
+        good = len(s) == len(expect) and all(close(a, b) for a, b in zip(s, expect))
         in_slab = 6.5e-3 <= z_up(t) < 7.5e-3
         n_in += in_slab
         q = 2 * V * 0.09 / (6e-3 * 6e-3 * 1e-3) if in_slab else 0
         fexp = [t, q, q, 0, 2 if in_slab else 0]
-        good &= all(close(a, b) for a, b in zip(flux[k], fexp))
+        good &= len(flux[k]) == len(fexp) and all(close(a, b) for a, b in zip(flux[k], fexp))
         if not good:
             bad += 1
             if bad <= 3:
@@ -71,7 +71,8 @@ def serial(case):
     prof = rows(case / 'postProcessing/flux/0.03/solidsFluxProfile.dat')
     per_bin = V * 0.09 / (2e-3 * 6e-3 * 1e-3) * n_in / STEPS
     pexp = [[1e-3, per_bin], [3e-3, 0], [5e-3, per_bin]]
-    pgood = all(close(a, b, 1e-12) for r, e in zip(prof, pexp) for a, b in zip(r, e))
+    pgood = len(prof) == 3 and all(len(r) == 2 for r in prof) and all(
+        close(a, b, 1e-12) for r, e in zip(prof, pexp) for a, b in zip(r, e))
     print(f'time-averaged profile {[r[1] for r in prof]}, by hand'
           f' {[e[1] for e in pexp]}: {"ok" if pgood else "FAIL"}')
     ok &= pgood and len(prof) == 3

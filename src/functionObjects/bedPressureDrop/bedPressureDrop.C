@@ -139,7 +139,12 @@ void Foam::functionObjects::bedPressureDrop::addSample
     }
     sampleTime_.append(t);
     sampleDp_.append(dp);
-    while (t - sampleTime_[first_] >= window_ - 0.5*dt)
+    // Keep at least the newest sample, whatever the window
+    while
+    (
+        first_ < sampleTime_.size() - 1
+     && t - sampleTime_[first_] >= window_ - 0.5*dt
+    )
     {
         ++first_;
     }
@@ -201,13 +206,13 @@ Foam::scalar Foam::functionObjects::bedPressureDrop::patchAverage
 }
 
 
-bool Foam::functionObjects::bedPressureDrop::execute()
+bool Foam::functionObjects::bedPressureDrop::write()
 {
     return true;
 }
 
 
-bool Foam::functionObjects::bedPressureDrop::write()
+bool Foam::functionObjects::bedPressureDrop::execute()
 {
     const volScalarField& p = lookupObject<volScalarField>(pName_);
     const scalar dp = patchAverage(p, lowerPatch_) - patchAverage(p, upperPatch_);

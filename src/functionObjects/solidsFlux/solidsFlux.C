@@ -220,6 +220,13 @@ bool Foam::functionObjects::solidsFlux::execute()
             << (upSum + downSum)/slabVolume << tab << upSum/slabVolume << tab
             << downSum/slabVolume << tab << inSlab << endl;
     }
+
+    // The average's state, written with the time's
+    if (mesh_.time().writeTime())
+    {
+        setProperty("profileSum", profileSum_);
+        setProperty("samples", nSamples_);
+    }
     return true;
 }
 
@@ -244,7 +251,5 @@ bool Foam::functionObjects::solidsFlux::write()
                 << (nSamples_ ? profileSum_[b]/nSamples_ : 0) << nl;
         }
     }
-    setProperty("profileSum", profileSum_);
-    setProperty("samples", nSamples_);
     return true;
 }
