@@ -30,3 +30,14 @@ Foam::autoPtr<Foam::contactKernel> Foam::contactKernel::New
     }
     return (*iter)(law, cohesion, durationSlot);
 }
+
+
+void Foam::contactKernelDetail::coincidentParticles(const point& x)
+{
+    FatalErrorInFunction
+        << "Two particles are at the same point " << x
+        << ": their contact has no direction." << nl
+        << "Particles must start at distinct points: check the injection"
+        << " (e.g. a positionsFile listing a point twice)"
+        << exit(FatalError);
+}
