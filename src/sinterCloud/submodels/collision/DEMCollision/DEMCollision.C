@@ -158,19 +158,22 @@ Foam::DEMCollision<CloudType>::DEMCollision
         );
     }
 
-    // Sintering laws take kelvin: a temperature below 200 K was given in C
-    if (engine_.cohesion().active() && constProps.found("T0"))
+    // Temperatures are kelvin: below 200 K was given in C (the cloud
+    // would clamp it to its TMin without a word)
+    if (constProps.found("T0"))
     {
         const scalar T0 = constProps.get<scalar>("T0");
-        if (T0 < 200)
+        if (!(T0 >= 200))
         {
             FatalIOErrorInFunction(constProps)
                 << "Keyword T0 = " << T0 << " K in " << constProps.name()
                 << " is below 200 K: temperatures are in kelvin"
-                << " (cohesionModel " << coeffs.get<word>("cohesionModel")
-                << ")" << exit(FatalIOError);
+                << exit(FatalIOError);
         }
-        engine_.cohesion().checkTemperature(T0);
+        if (engine_.cohesion().active())
+        {
+            engine_.cohesion().checkTemperature(T0);
+        }
     }
 
     if (Pstream::parRun())
