@@ -60,6 +60,7 @@ int main(int argc, char *argv[])
     #include "postProcess.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    #include "checkTimeStep.H"
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
