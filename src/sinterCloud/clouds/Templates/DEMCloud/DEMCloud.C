@@ -95,6 +95,31 @@ Foam::DEMCloud<CloudType>::DEMCloud
                 << exit(FatalIOError);
         }
 
+        // An injector's fixed number of particles per parcel must be > 0:
+        // with 0 it injects nothing, silently
+        const dictionary* injectorsPtr =
+            this->subModelProperties().subDictPtr("injectionModels");
+        if (injectorsPtr)
+        {
+            for (const entry& e : *injectorsPtr)
+            {
+                if
+                (
+                    e.isDict()
+                 && e.dict().lookupOrDefault<word>("parcelBasisType", "")
+                 == "fixed"
+                 && !(e.dict().get<scalar>("nParticle") > 0)
+                )
+                {
+                    FatalIOErrorInFunction(e.dict())
+                        << "Keyword nParticle of injector " << e.keyword()
+                        << " in " << e.dict().name() << " must be > 0, not "
+                        << e.dict().get<scalar>("nParticle")
+                        << " (with 0 it injects nothing)" << exit(FatalIOError);
+                }
+            }
+        }
+
         collision_.reset
         (
             new DEMCollision<DEMCloud<CloudType>>
