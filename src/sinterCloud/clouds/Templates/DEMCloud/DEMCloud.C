@@ -7,6 +7,7 @@
 #include "diffusionSmoother.H"
 #include "granularTemperature.H"
 #include "coarseGrainFactor.H"
+#include "patchInteractionDataList.H"
 #include "ZehnerSchlunder.H"
 
 namespace Foam
@@ -93,6 +94,39 @@ Foam::DEMCloud<CloudType>::DEMCloud
                 << "radiation on in " << this->particleProperties().name()
                 << ": the DEM cloud does not take particle radiation"
                 << exit(FatalIOError);
+        }
+
+        // OpenFOAM's patch interaction: e in [0, 1], mu >= 0 (a rebound
+        // with e = 1.5 gains energy without a word)
+        const dictionary* localPtr =
+            this->subModelProperties().subDictPtr("localInteractionCoeffs");
+        if
+        (
+            localPtr
+         && this->subModelProperties().template get<word>
+            (
+                "patchInteractionModel"
+            ) == "localInteraction"
+        )
+        {
+            const patchInteractionDataList patches(this->mesh(), *localPtr);
+            for (const patchInteractionData& pd : patches)
+            {
+                if (!(pd.e() >= 0 && pd.e() <= 1))
+                {
+                    FatalIOErrorInFunction(*localPtr)
+                        << "Patch interaction " << pd.patchName() << " in "
+                        << localPtr->name() << ": e = " << pd.e()
+                        << " must be in [0, 1]" << exit(FatalIOError);
+                }
+                if (!(pd.mu() >= 0))
+                {
+                    FatalIOErrorInFunction(*localPtr)
+                        << "Patch interaction " << pd.patchName() << " in "
+                        << localPtr->name() << ": mu = " << pd.mu()
+                        << " must be >= 0" << exit(FatalIOError);
+                }
+            }
         }
 
         // An injector's fixed number of particles per parcel must be > 0:
