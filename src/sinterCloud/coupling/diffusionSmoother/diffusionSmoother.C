@@ -13,11 +13,22 @@ Foam::diffusionSmoother::diffusionSmoother
     length_(dict.get<scalar>("smoothingLength")),
     solverControls_()
 {
-    if (length_ <= 0)
+    if (!(length_ > 0))
     {
         FatalIOErrorInFunction(dict)
             << "smoothingLength " << length_ << " must be > 0 [m]"
             << exit(FatalIOError);
+    }
+    // Longer than the domain's diagonal smooths the whole domain to its
+    // mean: a length in other units than metres, or a slip
+    const scalar diagonal = mesh.bounds().mag();
+    if (length_ > diagonal)
+    {
+        FatalIOErrorInFunction(dict)
+            << "smoothingLength " << length_ << " [m] is longer than the"
+            << " domain's diagonal " << diagonal << " m" << nl
+            << "It would spread every source over the whole domain (lengths"
+            << " are in metres)" << exit(FatalIOError);
     }
 
     solverControls_.add("solver", "PCG");
