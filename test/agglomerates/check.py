@@ -5,10 +5,11 @@
     check.py CASE [SERIALCASE]
     check.py --bridged CASE
 """
-import re
-import struct
 import sys
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / 'lib'))
+from foamFiles import lagrangian_list  # noqa: E402
 
 
 def rows(case):
@@ -16,17 +17,6 @@ def rows(case):
     return [[float(v) for v in line.split()]
             for line in dat.read_text().splitlines()
             if line.strip() and not line.startswith('#')]
-
-
-def label_field(path):
-    raw = path.read_bytes()
-    head_end = raw.index(b'}', raw.index(b'FoamFile')) + 1
-    binary = re.search(rb'format\s+binary', raw[:head_end]) is not None
-    m = re.compile(rb'(\d+)\s*\(').search(raw, head_end)
-    n = int(m.group(1))
-    if binary:
-        return list(struct.unpack(f'<{n}i', raw[m.end():m.end() + 4 * n]))
-    return [int(v) for v in raw[m.end():raw.index(b')', m.end())].split()]
 
 
 def bridged(case):
@@ -95,7 +85,7 @@ def main():
     print(f'histogram at 0.03 s: {pairs} (expected [(5, 1), (6, 1)])')
     ok = ok and pairs == [(5, 1), (6, 1)]
 
-    ids = label_field(case / '0.03/lagrangian/cloud/agglomerateId')
+    ids = lagrangian_list(case / '0.03/lagrangian/cloud/agglomerateId', 'i')
     groups = sorted(ids.count(v) for v in set(ids) if v >= 0)
     free = ids.count(-1)
     print(f'agglomerateId at 0.03 s: groups {groups}, {free} free, ids'

@@ -20,3 +20,21 @@ def foam_list(path):
     values = [float(x) for x in m.group(2).split()]
     assert len(values) == int(m.group(1)), path
     return values
+
+
+def lagrangian_list(path, kind):
+    """A lagrangian field of labels (kind 'i', 32-bit) or scalars ('d'),
+    ascii or binary, a list or uniform (N{value})."""
+    import struct
+    raw = Path(path).read_bytes()
+    head_end = raw.index(b'}', raw.index(b'FoamFile')) + 1
+    binary = re.search(rb'format\s+binary', raw[:head_end]) is not None
+    conv = int if kind == 'i' else float
+    m = re.compile(rb'(\d+)\s*([({])').search(raw, head_end)
+    n = int(m.group(1))
+    if m.group(2) == b'{':
+        return [conv(raw[m.end():raw.index(b'}', m.end())])] * n
+    if binary:
+        size = 4 if kind == 'i' else 8
+        return list(struct.unpack(f'<{n}{kind}', raw[m.end():m.end() + size * n]))
+    return [conv(v) for v in raw[m.end():raw.index(b')', m.end())].split()]

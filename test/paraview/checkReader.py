@@ -13,28 +13,13 @@ Requires, at TIME:
     stores 32-bit floats, whose rounding is 6e-8 relative).
 """
 import os
-import re
-import struct
 import sys
 
 from paraview import servermanager
 from paraview.simple import MergeBlocks, OpenFOAMReader
 
-
-def field(path, kind):
-    """A lagrangian field file: list of labels ('i') or scalars ('d')."""
-    raw = open(path, 'rb').read()
-    head_end = raw.index(b'}', raw.index(b'FoamFile')) + 1
-    binary = re.search(rb'format\s+binary', raw[:head_end]) is not None
-    conv = int if kind == 'i' else float
-    m = re.compile(rb'(\d+)\s*([({])').search(raw, head_end)
-    n = int(m.group(1))
-    if m.group(2) == b'{':      # a uniform list: N{value}
-        return [conv(raw[m.end():raw.index(b'}', m.end())])] * n
-    if binary:
-        size = 4 if kind == 'i' else 8
-        return list(struct.unpack(f'<{n}{kind}', raw[m.end():m.end() + size * n]))
-    return [conv(v) for v in raw[m.end():raw.index(b')', m.end())].split()]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'lib'))
+from foamFiles import lagrangian_list as field  # noqa: E402
 
 
 def main():

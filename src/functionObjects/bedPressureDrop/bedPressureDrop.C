@@ -6,6 +6,7 @@
 #include "gravityMeshObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
+#include "boundedKeyword.H"
 
 namespace Foam
 {
@@ -89,7 +90,7 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
     requireSinterCloud(mesh_, dict);
     voidageName_ = dict.lookupOrDefault<word>("voidage", "voidage");
 
-    window_ = positive(dict, "window", 0.2);
+    window_ = boundedKeyword<scalar>(dict, "window", 0.2, 0, false);
     if (dict.found("defluidization") && !dict.isDict("defluidization"))
     {
         FatalIOErrorInFunction(dict)
@@ -98,31 +99,11 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
             << exit(FatalIOError);
     }
     const dictionary crit(dict.subOrEmptyDict("defluidization"));
-    ratioBelow_ = positive(crit, "ratioBelow", 0.8);
-    stdBelow_ = positive(crit, "stdBelow", 0.02);
-    duration_ = positive(crit, "duration", window_, true);
+    ratioBelow_ = boundedKeyword<scalar>(crit, "ratioBelow", 0.8, 0, false);
+    stdBelow_ = boundedKeyword<scalar>(crit, "stdBelow", 0.02, 0, false);
+    duration_ = boundedKeyword<scalar>(crit, "duration", window_, 0, true);
 
     return true;
-}
-
-
-Foam::scalar Foam::functionObjects::bedPressureDrop::positive
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar deflt,
-    const bool zeroAllowed
-)
-{
-    const scalar value = dict.lookupOrDefault<scalar>(key, deflt);
-    if (!(zeroAllowed ? value >= 0 : value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << key << " in " << dict.name() << " must be "
-            << (zeroAllowed ? ">= 0" : "> 0") << ", not " << value
-            << exit(FatalIOError);
-    }
-    return value;
 }
 
 

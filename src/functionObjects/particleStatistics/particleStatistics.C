@@ -4,6 +4,7 @@
 #include "particleStatistics.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
+#include "boundedKeyword.H"
 #include "volFields.H"
 #include "OFstream.H"
 
@@ -14,30 +15,6 @@ namespace functionObjects
     defineTypeNameAndDebug(particleStatistics, 0);
     addToRunTimeSelectionTable(functionObject, particleStatistics, dictionary);
 }
-}
-
-
-// A keyword of a sub-dictionary that must be above a bound, or a fatal
-// error naming it
-template<class Type>
-static Type bounded
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Type deflt,
-    const Type lowerBound,
-    const bool inclusive
-)
-{
-    const Type value = dict.lookupOrDefault<Type>(key, deflt);
-    if (inclusive ? value < lowerBound : !(value > lowerBound))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << key << " in " << dict.name() << " must be "
-            << (inclusive ? ">= " : "> ") << lowerBound << ", not " << value
-            << Foam::exit(Foam::FatalIOError);
-    }
-    return value;
 }
 
 
@@ -94,13 +71,13 @@ bool Foam::functionObjects::particleStatistics::read(const dictionary& dict)
     }
 
     const dictionary speed(dict.subOrEmptyDict("speedDistribution"));
-    speedMax_ = bounded<scalar>(speed, "max", 1, 0, false);
-    speedBins_ = bounded<label>(speed, "bins", 50, 1, true);
+    speedMax_ = boundedKeyword<scalar>(speed, "max", 1, 0, false);
+    speedBins_ = boundedKeyword<label>(speed, "bins", 50, 1, true);
 
     const dictionary T(dict.subOrEmptyDict("temperatureDistribution"));
-    Tmin_ = bounded<scalar>(T, "min", 273.15, 0, false);
-    Tmax_ = bounded<scalar>(T, "max", 1473.15, Tmin_, false);
-    Tbins_ = bounded<label>(T, "bins", 120, 1, true);
+    Tmin_ = boundedKeyword<scalar>(T, "min", 273.15, 0, false);
+    Tmax_ = boundedKeyword<scalar>(T, "max", 1473.15, Tmin_, false);
+    Tbins_ = boundedKeyword<label>(T, "bins", 120, 1, true);
 
     return true;
 }
@@ -110,41 +87,35 @@ void Foam::functionObjects::particleStatistics::distributions
 (
     binnedDistribution& speed,
     binnedDistribution& T,
-    binnedDistribution& Tmass
+    const bool massWeighted
 ) const
 {
-    const basicSinterCloud& cloud =
-        *findSinterCloud(mesh_, cloudName_);
+    const basicSinterCloud& cloud = *findSinterCloud(mesh_, cloudName_);
 
     for (const basicSinterParcel& p : cloud)
     {
         const scalar n = p.nParticle();
         speed.add(mag(p.U()), n);
-        T.add(p.T(), n);
-        Tmass.add(p.T(), n*p.mass());
+        T.add(p.T(), massWeighted ? n*p.mass() : n);
     }
     speed.reduce();
     T.reduce();
-    Tmass.reduce();
     for (const basicSinterParcel& p : cloud)
     {
         const scalar n = p.nParticle();
         speed.addSpread(mag(p.U()), n);
-        T.addSpread(p.T(), n);
-        Tmass.addSpread(p.T(), n*p.mass());
+        T.addSpread(p.T(), massWeighted ? n*p.mass() : n);
     }
     speed.reduceSpread();
     T.reduceSpread();
-    Tmass.reduceSpread();
 }
 
 
 bool Foam::functionObjects::particleStatistics::execute()
 {
     binnedDistribution speed(0, speedMax_, speedBins_);
-    binnedDistribution T(Tmin_, Tmax_, Tbins_);
     binnedDistribution Tmass(Tmin_, Tmax_, Tbins_);
-    distributions(speed, T, Tmass);
+    distributions(speed, Tmass, true);
 
     // The granular temperature of the parcels' cells
     const basicSinterCloud& cloud = *findSinterCloud(mesh_, cloudName_);
@@ -177,8 +148,7 @@ bool Foam::functionObjects::particleStatistics::write()
 {
     binnedDistribution speed(0, speedMax_, speedBins_);
     binnedDistribution T(Tmin_, Tmax_, Tbins_);
-    binnedDistribution Tmass(Tmin_, Tmax_, Tbins_);
-    distributions(speed, T, Tmass);
+    distributions(speed, T, false);
 
     if (Pstream::master())
     {

@@ -4,6 +4,7 @@
 #include "solidsFlux.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
+#include "boundedKeyword.H"
 #include "gravityMeshObject.H"
 #include "OFstream.H"
 #include "mathematicalConstants.H"
@@ -118,20 +119,8 @@ bool Foam::functionObjects::solidsFlux::read(const dictionary& dict)
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
     requireSinterCloud(mesh_, dict);
     height_ = dict.get<scalar>("height");
-    thickness_ = dict.get<scalar>("thickness");
-    if (!(thickness_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword thickness of " << name() << " must be > 0, not "
-            << thickness_ << exit(FatalIOError);
-    }
-    nBins_ = dict.lookupOrDefault<label>("bins", 20);
-    if (nBins_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword bins of " << name() << " must be >= 1, not "
-            << nBins_ << exit(FatalIOError);
-    }
+    thickness_ = boundedKeyword<scalar>(dict, "thickness", 0, false);
+    nBins_ = boundedKeyword<label>(dict, "bins", 20, 1, true);
     averageFrom_ = dict.lookupOrDefault<scalar>("averageFrom", 0);
 
     const vector g = meshObjects::gravity::New(mesh_.time()).value();
