@@ -49,6 +49,8 @@ Description
 #include "cloudCoupling.H"
 #include "bedWallTemperatureFvPatchScalarField.H"
 #include "incrementSolve.H"
+#include "numberLiterals.H"
+#include "writtenTimes.H"
 
 int main(int argc, char *argv[])
 {
@@ -59,8 +61,10 @@ int main(int argc, char *argv[])
 
     #include "postProcess.H"
     #include "setRootCaseLists.H"
+    numberLiterals::checkCase(args);
     #include "createTime.H"
     #include "checkTimeStep.H"
+    writtenTimes::checkStart(runTime, "cloud");     // the cloud of createFields
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
@@ -102,6 +106,7 @@ int main(int argc, char *argv[])
         cloud.correctHeatExchange();
 
         runTime.write();
+        writtenTimes::markComplete(runTime, cloud.nParcels());
         runTime.printExecutionTime(Info);
     }
 

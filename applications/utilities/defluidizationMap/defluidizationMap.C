@@ -58,6 +58,7 @@ Usage
 #include "solidBridge.H"
 #include "HertzCollision.H"
 #include "ErgunDrag.H"
+#include "numberLiterals.H"
 
 using namespace Foam;
 
@@ -156,6 +157,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    numberLiterals::checkCase(args);
     #include "createTime.H"
 
     const fileName dictPath
@@ -280,6 +282,16 @@ int main(int argc, char *argv[])
         const word which(cal.get<word>("powder"));
         const scalar Tt(positive(cal, "Tt"));
         const scalar Td(positive(cal, "Td"));
+        if (!(Tt >= 200 && Td > Tt))
+        {
+            // T_t above T_d gave a tensile strength falling with T
+            FatalIOErrorInFunction(cal)
+                << "Keywords Tt " << Tt << " and Td " << Td << " of "
+                << cal.name() << " must be temperatures in kelvin with"
+                << " 200 K <= Tt < Td: the bed turns unstable (T_t) below"
+                << " the temperature at which it defluidizes (T_d)"
+                << exit(FatalIOError);
+        }
 
         label pi = -1;
         forAll(powders, i)

@@ -76,6 +76,7 @@ Usage
 #include "dragLaw.H"
 #include "mathematicalConstants.H"
 #include "IOmanip.H"
+#include "numberLiterals.H"
 
 using namespace Foam;
 
@@ -103,6 +104,28 @@ scalar positive(const dictionary& dict, const word& key)
 }
 
 
+//- A particle diameter [m] of a fluidized bed: in [0.1 um, 5 cm]
+void checkSize(const dictionary& dict, const word& key, const scalar d)
+{
+    if (!(d >= 1e-7 && d <= 0.05))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " " << d << " in " << dict.name()
+            << " must be a particle diameter in metres, in [1e-7, 0.05] m"
+            << (d > 0.05 ? " (micrometres? 58 um is 58e-6)" : "")
+            << exit(FatalIOError);
+    }
+}
+
+
+scalar size(const dictionary& dict, const word& key)
+{
+    const scalar d = dict.get<scalar>(key);
+    checkSize(dict, key, d);
+    return d;
+}
+
+
 sizeClasses readSizeDistribution(const dictionary& dict)
 {
     const word type(dict.get<word>("type"));
@@ -110,10 +133,10 @@ sizeClasses readSizeDistribution(const dictionary& dict)
 
     if (type == "normal")
     {
-        const scalar mean = positive(dict, "mean");
+        const scalar mean = size(dict, "mean");
         const scalar sigma = positive(dict, "standardDeviation");
-        const scalar dMin = positive(dict, "min");
-        const scalar dMax = positive(dict, "max");
+        const scalar dMin = size(dict, "min");
+        const scalar dMax = size(dict, "max");
         const label n = dict.lookupOrDefault<label>("nClasses", 400);
         if (dMax <= dMin || n < 2)
         {
@@ -121,6 +144,14 @@ sizeClasses readSizeDistribution(const dictionary& dict)
                 << "need min < max and nClasses >= 2 (min " << dMin
                 << ", max " << dMax << ", nClasses " << n << ')'
                 << exit(FatalIOError);
+        }
+        if (!(mean > dMin && mean < dMax))
+        {
+            // Far outside, every class had a number density of 0
+            FatalIOErrorInFunction(dict)
+                << "Keyword mean " << mean << " in " << dict.name()
+                << " must lie inside [min, max] = [" << dMin << ", "
+                << dMax << "] m" << exit(FatalIOError);
         }
 
         // Midpoint classes of the number density, volume weight d^3
@@ -173,6 +204,7 @@ sizeClasses readSizeDistribution(const dictionary& dict)
                     << s.x[i] << ") needs d > 0 and a volume fraction >= 0"
                     << exit(FatalIOError);
             }
+            checkSize(dict, "classes", s.d[i]);
         }
 
         // Volume median, classes in the order given (ascending d)
@@ -293,6 +325,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    numberLiterals::checkCase(args);
     #include "createTime.H"
 
     IOdictionary dict

@@ -34,7 +34,7 @@ Description
 
 #include "argList.H"
 #include "unitCheck.H"
-#include "IStringStream.H"
+#include "sinteringEngine.H"
 #include "demEngine.H"
 #include "mathematicalConstants.H"
 
@@ -44,59 +44,12 @@ namespace
 {
 
 using unitTest::check;
+using unitTest::hematiteMaterials;
+using unitTest::sinteringEngineDict;
 
 
 const scalar rPrimary = 29e-6;
 const scalar dt = 1e-6;
-
-
-dictionary engineDict
-(
-    const word& cohesion,
-    const string& C,
-    const scalar tAct,
-    const word& wallTemperature = "wall"
-)
-{
-    return dictionary
-    (
-        IStringStream
-        (
-            "contactLaw HertzMindlin;"
-            "particleParticle { restitution 0.9; friction 0.5; }"
-            "particleWall { restitution 0.9; friction 0.5; }"
-            "cohesionModel " + cohesion + ";"
-            "solidBridgeCoeffs"
-            "{"
-            "    C " + C + "; activationTime " + Foam::name(tAct) + ";"
-            "    wallTemperature " + wallTemperature + ";"
-            "}"
-        )()
-    );
-}
-
-
-//- The materials: hematite of Table 5.1 (softened for the DEM), the walls
-//  of the same material
-dictionary materials()
-{
-    return dictionary
-    (
-        IStringStream
-        (
-            "hematite"
-            "{"
-            "    density 5240; youngsModulus 359e9; demYoungsModulus 1e6;"
-            "    poissonsRatio 0.12;"
-            "    surfaceTension 1; latticeConstant 1.38e-9;"
-            "    surfaceDiffusion ((1173.15 2.8e-13 1.74e5) (1e30 1.6e5 5.79e5));"
-            "    tensileStrength polynomial ((415377459.1 0) (-173.6283211 2));"
-            "}"
-            "particle hematite;"
-            "walls { \".*\" hematite; }"
-        )()
-    );
-}
 
 
 //- Two spheres of K r_p held in contact at T for n steps
@@ -130,11 +83,20 @@ result run
     const scalar T,
     const label n,
     const string& C = "smooth",
-    const scalar tAct = 0
+    const scalar tAct = 0,
+    const word& neckIntegration = "exact"
 )
 {
-    demEngine with(engineDict("solidBridge", C, tAct), materials(), K);
-    demEngine without(engineDict("none", C, tAct), materials(), K);
+    demEngine with
+    (
+        sinteringEngineDict("solidBridge", C, tAct, "wall", neckIntegration),
+        hematiteMaterials(),
+        K
+    );
+    demEngine without
+    (
+        sinteringEngineDict("none", C, tAct), hematiteMaterials(), K
+    );
     hold(with, K, T);
     hold(without, K, T);
     for (label k = 0; k < n; ++k)
@@ -178,8 +140,11 @@ scalar wallRun
     {
         demEngine e
         (
-            engineDict(k ? "none" : "solidBridge", "smooth", 0, wallTemperature),
-            materials(),
+            sinteringEngineDict
+            (
+                k ? "none" : "solidBridge", "smooth", 0, wallTemperature
+            ),
+            hematiteMaterials(),
             1
         );
         e.setWalls(demWalls(points, faces));
@@ -237,13 +202,30 @@ int main(int argc, char *argv[])
         check("contact time [s]", r.duration, 10000*dt, 1e-12);
     }
 
-    // x^7 grows linearly in time
+    // x^7 grows linearly in time; the state holds the neck at the end of
+    // the step's kick interval, t + dt/2 (neckIntegration exact), or at t
+    // (stepCount)
     check
     (
-        "x^7(0.01 s)/x^7(0.005 s)",
+        "x^7(0.01 s + dt/2)/x^7(0.005 s + dt/2)",
         run(1, 1273.15, 10000).x7/run(1, 1273.15, 5000).x7,
+        10000.5/5000.5,
+        1e-9
+    );
+    check
+    (
+        "x^7(0.01 s)/x^7(0.005 s), stepCount",
+        run(1, 1273.15, 10000, "smooth", 0, "stepCount").x7
+       /run(1, 1273.15, 5000, "smooth", 0, "stepCount").x7,
         2,
         1e-9
+    );
+    check
+    (
+        "F_sb(1273.15 K, 0.01 s), stepCount [N]",
+        run(1, 1273.15, 10000, "smooth", 0, "stepCount").force,
+        reference(1, 1273.15, 0.01, 1),
+        1e-3
     );
 
     // No force for C = 0 or before the activation time
@@ -265,7 +247,12 @@ int main(int argc, char *argv[])
     // The contact ends after 1000 steps: the history resets (no bridge),
     // and a new contact starts again from one step (eq 5.11)
     {
-        demEngine e(engineDict("solidBridge", "smooth", 0), materials(), 1);
+        demEngine e
+        (
+            sinteringEngineDict("solidBridge", "smooth", 0),
+            hematiteMaterials(),
+            1
+        );
         hold(e, 1, 1273.15);
         for (label k = 0; k < 1000; ++k)
         {

@@ -19,6 +19,9 @@
 #include "GasPressureGradientForce.H"
 #include "WeightForce.H"
 
+// sinterFoam's own injection
+#include "LatticeBedInjection.H"
+
 // OpenFOAM's stock families
 makeParcelCloudFunctionObjects(basicSinterCloud);
 makeThermoParcelForces(basicSinterCloud);
@@ -35,3 +38,6 @@ makeHeatTransferModelType(ConvectionHeatTransfer, basicSinterCloud);
 makeParticleForceModelType(VoidageDragForce, basicSinterCloud);
 makeParticleForceModelType(GasPressureGradientForce, basicSinterCloud);
 makeParticleForceModelType(WeightForce, basicSinterCloud);
+
+// sinterFoam's addition to the injection table
+makeInjectionModelType(LatticeBedInjection, basicSinterCloud);

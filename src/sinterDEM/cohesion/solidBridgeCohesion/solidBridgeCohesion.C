@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "solidBridgeCohesion.H"
+#include "knownKeywords.H"
 #include "contactLaw.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -26,6 +27,17 @@ Foam::cohesionModels::solidBridge::wallTemperatureModelNames
 });
 
 
+const Foam::Enum
+<
+    Foam::cohesionModels::solidBridge::neckIntegrationModel
+>
+Foam::cohesionModels::solidBridge::neckIntegrationModelNames
+({
+    { neckIntegrationModel::exact, "exact" },
+    { neckIntegrationModel::stepCount, "stepCount" },
+});
+
+
 namespace
 {
 
@@ -41,7 +53,7 @@ Foam::scalar timeCorrection
 }
 
 //- The material in the model's settings is an old layout: fatal
-void checkNoMaterial(const Foam::dictionary& coeffs)
+void checkKeywords(const Foam::dictionary& coeffs)
 {
     if (coeffs.found("material"))
     {
@@ -51,6 +63,39 @@ void checkNoMaterial(const Foam::dictionary& coeffs)
             << " particles' material in constant/materialProperties"
             << Foam::exit(Foam::FatalIOError);
     }
+    Foam::knownKeywords::check
+    (
+        coeffs,
+        {
+            "C", "curvatureRadius", "activationTime", "wallTemperature",
+            "neckIntegration"
+        }
+    );
+}
+
+//- The choice named by an optional keyword (its default if absent);
+//  fatal, listing the valid names, if unknown
+template<class EnumType>
+EnumType readChoice
+(
+    const Foam::dictionary& coeffs,
+    const Foam::word& key,
+    const Foam::Enum<EnumType>& names,
+    const EnumType deflt
+)
+{
+    const Foam::word name
+    (
+        coeffs.lookupOrDefault<Foam::word>(key, names[deflt])
+    );
+    if (!names.found(name))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Unknown " << key << " " << name << " in " << coeffs.name()
+            << Foam::nl << "Valid " << key << " values are " << names
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return names[name];
 }
 
 } // End anonymous namespace
@@ -70,24 +115,6 @@ void Foam::cohesionModels::solidBridge::Factors::evaluate(const scalar T)
 }
 
 
-Foam::cohesionModels::solidBridge::wallTemperatureModel
-Foam::cohesionModels::solidBridge::readWallTemperature
-(
-    const dictionary& coeffs
-)
-{
-    const word name(coeffs.lookupOrDefault<word>("wallTemperature", "wall"));
-    if (!wallTemperatureModelNames.found(name))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Unknown wallTemperature " << name << " in " << coeffs.name()
-            << nl << "Valid wallTemperature values are "
-            << wallTemperatureModelNames << exit(FatalIOError);
-    }
-    return wallTemperatureModelNames[name];
-}
-
-
 Foam::cohesionModels::solidBridge::solidBridge
 (
     const dictionary& dict,
@@ -97,14 +124,29 @@ Foam::cohesionModels::solidBridge::solidBridge
 )
 :
     coeffs_(dict.subDict("solidBridgeCoeffs")),
-    material_((checkNoMaterial(coeffs_), law.materials().particleDict())),
+    material_((checkKeywords(coeffs_), law.materials().particleDict())),
     law_(material_, coeffs_),
     activationTime_(coeffs_.lookupOrDefault<scalar>("activationTime", 0)),
     K_(coarseGrainFactor),
     forceScale_(std::pow(K_, 12.0/7.0)),
     cPair_(timeCorrection(law.particleMaterial(), law.particleMaterial())),
     cWall_(law.materials().nWalls()),
-    wallTemperature_(readWallTemperature(coeffs_)),
+    wallTemperature_
+    (
+        readChoice
+        (
+            coeffs_, "wallTemperature", wallTemperatureModelNames,
+            wallTemperatureModel::wall
+        )
+    ),
+    neckIntegration_
+    (
+        readChoice
+        (
+            coeffs_, "neckIntegration", neckIntegrationModelNames,
+            neckIntegrationModel::exact
+        )
+    ),
     bridgeSlot_(slots.addScalar("bridge", typeName, false))
 {
     forAll(cWall_, m)
@@ -126,5 +168,6 @@ Foam::cohesionModels::solidBridge::solidBridge
         << law.materials().wallNames() << "), force scale K^(12/7) = "
         << forceScale_ << ", wall contacts at the "
         << wallTemperatureModelNames[wallTemperature_] << "'s temperature"
-        << endl;
+        << ", neck integration "
+        << neckIntegrationModelNames[neckIntegration_] << endl;
 }

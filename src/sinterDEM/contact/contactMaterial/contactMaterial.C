@@ -4,6 +4,7 @@
 #include "contactMaterial.H"
 #include "effectiveProperties.H"
 #include "contactMaterials.H"
+#include "knownKeywords.H"
 
 
 Foam::contactMaterial::contactMaterial(const dictionary& dict)
@@ -11,10 +12,10 @@ Foam::contactMaterial::contactMaterial(const dictionary& dict)
     youngsModulus_
     (
         dict.found("demYoungsModulus")
-      ? contactMaterials::positive(dict, "demYoungsModulus")
-      : contactMaterials::positive(dict, "youngsModulus")
+      ? contactMaterials::modulus(dict, "demYoungsModulus")
+      : contactMaterials::modulus(dict, "youngsModulus")
     ),
-    realYoungsModulus_(contactMaterials::positive(dict, "youngsModulus")),
+    realYoungsModulus_(contactMaterials::modulus(dict, "youngsModulus")),
     poissonsRatio_(dict.get<scalar>("poissonsRatio"))
 {
     if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))
@@ -84,6 +85,7 @@ Foam::contactProperties::contactProperties
     friction_(dict.get<scalar>("friction")),
     rollingFriction_(dict.lookupOrDefault<scalar>("rollingFriction", 0))
 {
+    knownKeywords::check(dict, {"restitution", "friction", "rollingFriction"});
     if (!(restitution_ > 0 && restitution_ <= 1))
     {
         FatalIOErrorInFunction(dict)

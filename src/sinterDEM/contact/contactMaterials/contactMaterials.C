@@ -2,9 +2,12 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactMaterials.H"
+#include "knownKeywords.H"
+#include "sinterMaterial.H"
 #include "DynamicList.H"
 #include "IOdictionary.H"
 #include "Time.H"
+#include "StringStream.H"
 
 namespace
 {
@@ -38,6 +41,46 @@ Foam::word materialName(const Foam::entry& e, const Foam::dictionary& walls)
     return name;
 }
 
+//- Fatal: keyword key of dict has a value outside range (a physical
+//  range, with its unit: outside it the value is a typing or unit error)
+void outOfRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar value,
+    const Foam::string& range,
+    const char* hint = ""
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "Keyword " << key << " in " << dict.name() << " must lie in "
+        << range.c_str() << ", not " << value << hint
+        << Foam::exit(Foam::FatalIOError);
+}
+
+//- If dict has key, fatal unless its value lies in [lo, hi] unit
+void optionalInRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar lo,
+    const Foam::scalar hi,
+    const char* unit
+)
+{
+    if (!dict.found(key))
+    {
+        return;
+    }
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+    if (!(value >= lo && value <= hi))
+    {
+        Foam::OStringStream range;
+        range << '[' << lo << ", " << hi << "] " << unit;
+        outOfRange(dict, key, value, range.str());
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -65,8 +108,43 @@ Foam::contactMaterials::contactMaterials(const dictionary& dict)
 :
     dict_(dict),
     particleName_(dict.get<word>("particle")),
-    particle_(material(particleName_, dict, "particle"))
+    particle_(material(particleName_, dict, "particle")),
+    heatCapacityScale_(1)
 {
+    // Materials (every dictionary but walls), particle and walls only
+    const wordList names(materialNames(dict_));
+    for (const word& name : names)
+    {
+        const dictionary& mat = dict_.subDict(name);
+        knownKeywords::check(mat, sinterMaterial::keywords());
+        optionalInRange(mat, "density", 10, 3e4, "kg/m^3");
+        optionalInRange(mat, "specificHeat", 10, 1e5, "J/(kg K)");
+        optionalInRange(mat, "thermalConductivity", 1e-3, 1e4, "W/(m K)");
+    }
+    wordList valid(names);
+    valid.append(word("particle"));
+    valid.append(word("walls"));
+    valid.append(word("heatCapacityScale"));
+    knownKeywords::check(dict_, valid);
+
+    if (dict_.found("heatCapacityScale"))
+    {
+        heatCapacityScale_ = dict_.get<scalar>("heatCapacityScale");
+        if (!(heatCapacityScale_ > 0 && heatCapacityScale_ <= 1))
+        {
+            outOfRange
+            (
+                dict_, "heatCapacityScale", heatCapacityScale_, "(0, 1]",
+                ": it divides the particles' thermal inertia (a steady-state"
+                " acceleration), it never raises it"
+            );
+        }
+        Info<< "Particle heat capacity scaled by heatCapacityScale "
+            << heatCapacityScale_ << " (" << dict_.name()
+            << "): thermal transients are that much faster; only steady"
+            << " states are physical" << endl;
+    }
+
     const dictionary& walls = dict_.subDict("walls");
     for (const entry& e : walls)
     {
@@ -95,6 +173,40 @@ Foam::label Foam::contactMaterials::wallMaterial(const word& patchName) const
             << exit(FatalIOError);
     }
     return wallNames_.find(materialName(*ePtr, walls));
+}
+
+
+Foam::scalar Foam::contactMaterials::particleHeatCapacity() const
+{
+    return heatCapacityScale_*positive(particleDict(), "specificHeat");
+}
+
+
+void Foam::contactMaterials::checkHeatCapacity
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar value
+) const
+{
+    if (heatCapacityScale_ == 1)
+    {
+        checkSame(dict, key, value, "specificHeat");
+        return;
+    }
+    const scalar expected = particleHeatCapacity();
+    if (mag(value - expected) > 1e-12*mag(expected))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword " << key << " " << value << " in " << dict.name()
+            << " is not the particles' scaled heat capacity " << expected
+            << " (specificHeat times heatCapacityScale of " << dict_.name()
+            << ')' << nl
+            << "Write cp $materials/" << particleName_ << "/specificHeat;"
+            << " cpScale $materials/heatCapacityScale; at the top of the"
+            << " file and " << key << " #eval{ $cp*$cpScale };"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -151,6 +263,26 @@ Foam::scalar Foam::contactMaterials::positive
         FatalIOErrorInFunction(dict)
             << "Keyword " << key << " in " << dict.name()
             << " must be positive, not " << value << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::contactMaterials::modulus
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value >= 1e3 && value <= 1e13))
+    {
+        outOfRange
+        (
+            dict, key, value, "[1e3, 1e13] Pa",
+            "\nA Young's modulus in Pa: hematite 359e9 (Table 2.4), the"
+            " thesis's DEM value 1e6 (Table 5.1)"
+        );
     }
     return value;
 }

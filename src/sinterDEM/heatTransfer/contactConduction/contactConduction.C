@@ -95,7 +95,7 @@ Foam::contactConduction::contactConduction
     }
 
     const dictionary& pDict = materials.particleDict();
-    cp_ = contactMaterials::positive(pDict, "specificHeat");
+    cp_ = materials.particleHeatCapacity();
     const scalar kP = contactMaterials::positive(pDict, "thermalConductivity");
 
     // g = G/R_c of the direct law for each pair of materials

@@ -3,6 +3,7 @@
 
 #include "dragLaw.H"
 #include "error.H"
+#include "knownKeywords.H"
 
 namespace Foam
 {
@@ -11,7 +12,11 @@ namespace Foam
 }
 
 
-Foam::autoPtr<Foam::dragLaw> Foam::dragLaw::New(const dictionary& dict)
+Foam::autoPtr<Foam::dragLaw> Foam::dragLaw::New
+(
+    const dictionary& dict,
+    const wordList& readerKeywords
+)
 {
     const word lawName(dict.get<word>("law"));
 
@@ -28,7 +33,45 @@ Foam::autoPtr<Foam::dragLaw> Foam::dragLaw::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<dragLaw>(cstrIter()(dict));
+    autoPtr<dragLaw> law(cstrIter()(dict));
+
+    wordList valid(law->keywords());
+
+    // "polydisperse false" is true of every law; "true" for a law without
+    // a size correction would be ignored, so it is fatal and names the
+    // laws that have one
+    if (!valid.found("polydisperse") && dict.found("polydisperse"))
+    {
+        if (dict.get<bool>("polydisperse"))
+        {
+            wordList withCorrection;
+            for (const word& name : dictionaryConstructorTablePtr_->sortedToc())
+            {
+                dictionary probe;
+                probe.add("law", name);
+                if
+                (
+                    (*dictionaryConstructorTablePtr_)[name](probe)
+                   ->keywords().found("polydisperse")
+                )
+                {
+                    withCorrection.append(name);
+                }
+            }
+            FatalIOErrorInFunction(dict)
+                << "Keyword polydisperse true in " << dict.name()
+                << ": drag law " << lawName
+                << " has no polydisperse correction" << nl
+                << "Laws with one are " << withCorrection
+                << exit(FatalIOError);
+        }
+        valid.append(word("polydisperse"));
+    }
+    valid.append(word("law"));
+    valid.append(readerKeywords);
+    knownKeywords::check(dict, valid);
+
+    return law;
 }
 
 

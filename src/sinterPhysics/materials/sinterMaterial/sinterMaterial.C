@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "sinterMaterial.H"
+#include "knownKeywords.H"
 #include "TableBase.H"
 #include "IOmanip.H"
 
@@ -33,6 +34,19 @@ Foam::scalar readRange
 } // End anonymous namespace
 
 
+const Foam::wordList& Foam::sinterMaterial::keywords()
+{
+    static const wordList names
+    {
+        "density", "specificHeat", "youngsModulus", "demYoungsModulus",
+        "poissonsRatio", "thermalConductivity", "surfaceTension",
+        "latticeConstant", "surfaceDiffusion", "tensileStrength",
+        "tensileStrengthCoeffs"
+    };
+    return names;
+}
+
+
 Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
 :
     name_(dict.dictName()),
@@ -47,6 +61,8 @@ Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
     sigmaThigh_(GREAT),
     dict_(dict)
 {
+    knownKeywords::check(dict, keywords());
+
     // A table holds sigma only over the temperatures it lists
     typedef Function1Types::TableBase<scalar> tableType;
     if (isA<tableType>(sigma_()))

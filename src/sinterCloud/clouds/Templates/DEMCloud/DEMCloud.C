@@ -9,6 +9,7 @@
 #include "coarseGrainFactor.H"
 #include "patchInteractionDataList.H"
 #include "ZehnerSchlunder.H"
+#include "LatticeBedInjection.H"
 
 namespace Foam
 {
@@ -58,6 +59,7 @@ Foam::DEMCloud<CloudType>::DEMCloud
 :
     CloudType(cloudName, rho, U, g, thermo, false),
     massChecked_(false),
+    placedBed_(false),
     convection_(nullptr)
 {
     if (this->solution().active())
@@ -223,10 +225,51 @@ void Foam::DEMCloud<CloudType>::evolve()
 {
     if (this->solution().canEvolve())
     {
+        // The parcels injected and lost in the step, counted from the
+        // totals (the cloud's "Parcel fate: escape" also counts rebounds)
+        const label n0 = returnReduce(this->size(), sumOp<label>());
+        const label added0 = parcelsInjected();
+        const label placed0 = parcelsPlaced();
+
         typename parcelType::trackingData td(*this);
         this->solve(*this, td);
         updateBedFields();
+
+        const label n1 = returnReduce(this->size(), sumOp<label>());
+        const label added = parcelsInjected() - added0;
+        placedBed_ = parcelsPlaced() > placed0;
+        Info<< "    Parcels: " << n1 << " (" << added << " injected, "
+            << n0 + added - n1 << " left the domain in this step)" << endl;
     }
+}
+
+
+template<class CloudType>
+Foam::label Foam::DEMCloud<CloudType>::parcelsInjected() const
+{
+    label n = 0;
+    forAll(this->injectors(), i)
+    {
+        n += this->injectors()[i].parcelsAddedTotal();
+    }
+    return returnReduce(n, sumOp<label>());
+}
+
+
+template<class CloudType>
+Foam::label Foam::DEMCloud<CloudType>::parcelsPlaced() const
+{
+    typedef LatticeBedInjection<typename CloudType::kinematicCloudType>
+        placement;
+    label n = 0;
+    forAll(this->injectors(), i)
+    {
+        if (isA<placement>(this->injectors()[i]))
+        {
+            n += this->injectors()[i].parcelsAddedTotal();
+        }
+    }
+    return returnReduce(n, sumOp<label>());
 }
 
 

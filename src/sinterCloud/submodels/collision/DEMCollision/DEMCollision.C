@@ -8,6 +8,7 @@
 #include "wallPolyPatch.H"
 #include "volFields.H"
 #include "IOdictionary.H"
+#include "knownKeywords.H"
 
 template<class CloudType>
 Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
@@ -103,9 +104,32 @@ Foam::DEMCollision<CloudType>::DEMCollision
     ),
     deltaT_(coeffs_.lookupOrDefault<scalar>("deltaT", 0)),
     fraction_(coeffs_.lookupOrDefault<scalar>("collisionTimeFraction", 0)),
-    impactVelocity_(coeffs_.lookupOrDefault<scalar>("impactVelocity", 1))
+    impactVelocity_(coeffs_.lookupOrDefault<scalar>("impactVelocity", 1)),
+    domainExtent_(cmptMin(boundBox(owner.mesh().points(), true).span())),
+    warnedFast_(false),
+    warnedPlaced_(false)
 {
     const dictionary& coeffs = coeffs_;
+    // The coefficients of any law or cohesion model may stay while
+    // another is selected
+    DynamicList<word> valid
+    {
+        "contactLaw", "particleParticle", "particleWall", "walls", "deltaT",
+        "collisionTimeFraction", "impactVelocity", "skin", "cohesionModel",
+        "conduction"
+    };
+    for (const word& law : contactLaw::dictionaryConstructorTablePtr_->toc())
+    {
+        valid.append(law + "Coeffs");
+    }
+    for
+    (
+        const word& model : cohesionModel::dictionaryConstructorTablePtr_->toc()
+    )
+    {
+        valid.append(model + "Coeffs");
+    }
+    knownKeywords::check(coeffs, valid);
     const bool hasStep = coeffs.found("deltaT");
     const bool hasFraction = coeffs.found("collisionTimeFraction");
 
@@ -135,11 +159,14 @@ Foam::DEMCollision<CloudType>::DEMCollision
             << "], not " << fraction_
             << exit(FatalIOError);
     }
-    if (!(impactVelocity_ > 0))
+    if (!(impactVelocity_ >= 0.01 && impactVelocity_ <= 100))
     {
         FatalIOErrorInFunction(coeffs)
             << "Keyword impactVelocity in " << coeffs.name()
-            << " must be positive [m/s], not " << impactVelocity_
+            << " must lie in [0.01, 100] m/s, not " << impactVelocity_ << nl
+            << "It is the approach speed of the collision time t_c that"
+            << " sets the DEM step: a tiny one lengthens t_c (as v^-1/5"
+            << " for Hertz) and so the step"
             << exit(FatalIOError);
     }
 
@@ -152,9 +179,9 @@ Foam::DEMCollision<CloudType>::DEMCollision
     );
     if (constProps.found("Cp0"))
     {
-        materials.checkSame
+        materials.checkHeatCapacity
         (
-            constProps, "Cp0", constProps.get<scalar>("Cp0"), "specificHeat"
+            constProps, "Cp0", constProps.get<scalar>("Cp0")
         );
     }
 
@@ -300,20 +327,50 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
 {
     const demParticles& P = engine_.particles();
 
-    // The smallest parcel has the shortest contact
+    // The smallest parcel has the shortest contact; the largest must fit
+    // the domain; the fastest could approach at twice its speed
     scalar rMin = GREAT;
     scalar mMin = GREAT;
+    scalar rMax = 0;
+    scalar U2Max = 0;
     for (label i = 0; i < engine_.nLocal(); ++i)
     {
         rMin = min(rMin, P.radius[i]);
         mMin = min(mMin, P.mass(i));
+        rMax = max(rMax, P.radius[i]);
+        U2Max = max(U2Max, magSqr(P.velocity[i]));
     }
     reduce(rMin, minOp<scalar>());
     reduce(mMin, minOp<scalar>());
+    reduce(rMax, maxOp<scalar>());
+    reduce(U2Max, maxOp<scalar>());
 
     if (rMin == GREAT)
     {
         return 1;
+    }
+
+    if (2*rMax > domainExtent_)
+    {
+        FatalErrorInFunction
+            << "A parcel of diameter " << 2*rMax << " m is wider than the"
+            << " domain's smallest extent " << domainExtent_ << " m" << nl
+            << "Check the sizes of the injection models in constant/"
+            << "cloudProperties (subModels/injectionModels/.../"
+            << "sizeDistribution, in metres) and the coarseGrainFactor"
+            << " of constantProperties (the parcel is K times the primary"
+            << " particle)" << exit(FatalError);
+    }
+
+    if (!warnedFast_ && 2*sqrt(U2Max) > impactVelocity_)
+    {
+        warnedFast_ = true;
+        WarningInFunction
+            << "Parcels move at up to " << sqrt(U2Max) << " m/s: two could"
+            << " approach faster than impactVelocity " << impactVelocity_
+            << " m/s of " << coeffs_.name() << ", and their contact is"
+            << " shorter than the t_c that sets the DEM step (told once)"
+            << endl;
     }
 
     const scalar tc = engine_.law().collisionTime(rMin, mMin, impactVelocity_);
@@ -348,8 +405,33 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
 
     engine_.setTime(owner_.db().time().value() - dt);
     const label builds0 = engine_.nBuilds();
+    engine_.resetPlacedOverlaps();
     engine_.beginStep();
     engine_.advance(dtDEM, nSub);
+    // Contacts of particles placed into each other (the deepest is
+    // gathered only when there are some: nPlaced is the same on all ranks)
+    const label nPlaced =
+        returnReduce(engine_.nPlacedOverlaps(), sumOp<label>());
+    scalar deepestPercent = 0;
+    if (nPlaced)
+    {
+        deepestPercent = 0.1*std::round
+        (
+            1000*returnReduce(engine_.deepestPlacedOverlap(), maxOp<scalar>())
+        );
+    }
+    if (nPlaced && !warnedPlaced_)
+    {
+        warnedPlaced_ = true;
+        WarningInFunction
+            << nPlaced << " contacts began with particles placed into each"
+            << " other (or into a wall), up to "
+            << deepestPercent << " % of the smaller radius: their springs"
+            << " push them apart at high speed. Inject parcels apart"
+            << " (positions, a slower pour) or start from a settled bed."
+            << " The DEM lines of the log count such contacts (told once)"
+            << endl;
+    }
 
     Info<< "    DEM: " << nSub << " sub-steps of " << dtDEM << " s, "
         << returnReduce(engine_.nPairContacts(), sumOp<label>())
@@ -362,8 +444,13 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
             << returnReduce(engine_.nBridgedContacts(), sumOp<label>())
             << " bridged";
     }
-    Info<< "; lists built " << engine_.nBuilds() - builds0 << " times"
-        << endl;
+    Info<< "; lists built " << engine_.nBuilds() - builds0 << " times";
+    if (nPlaced)
+    {
+        Info<< "; " << nPlaced << " began placed into each other (deepest "
+            << deepestPercent << " % of the radius)";
+    }
+    Info<< endl;
 }
 
 

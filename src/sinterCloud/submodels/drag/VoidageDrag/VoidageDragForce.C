@@ -5,6 +5,27 @@
 #include "volFields.H"
 #include "coarseGrainFactor.H"
 #include "mathematicalConstants.H"
+#include "FlatOutput.H"
+
+template<class CloudType>
+const Foam::volScalarField& Foam::VoidageDragForce<CloudType>::voidageField
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    const word name(dict.lookupOrDefault<word>("voidage", "voidage"));
+    if (!mesh.foundObject<volScalarField>(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword voidage in " << dict.name() << " names no field: "
+            << name << nl << "The volScalarFields are "
+            << flatOutput(mesh.sortedNames<volScalarField>())
+            << exit(FatalIOError);
+    }
+    return mesh.lookupObject<volScalarField>(name);
+}
+
 
 template<class CloudType>
 Foam::VoidageDragForce<CloudType>::VoidageDragForce
@@ -17,14 +38,8 @@ Foam::VoidageDragForce<CloudType>::VoidageDragForce
     // A dictionary: `drag { law ...; }`
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     dict_(this->coeffs()),
-    law_(dragLaw::New(dict_)),
-    voidage_
-    (
-        mesh.lookupObject<volScalarField>
-        (
-            dict_.template lookupOrDefault<word>("voidage", "voidage")
-        )
-    ),
+    law_(dragLaw::New(dict_, wordList(1, word("voidage")))),
+    voidage_(voidageField(mesh, dict_)),
     K_(coarseGrainFactor(owner.constProps().dict())),
     coupling_(cloudCoupling::New(mesh)),
     dSauter_()
@@ -39,7 +54,7 @@ Foam::VoidageDragForce<CloudType>::VoidageDragForce
 :
     ParticleForce<CloudType>(df),
     dict_(df.dict_),
-    law_(dragLaw::New(dict_)),
+    law_(dragLaw::New(dict_, wordList(1, word("voidage")))),
     voidage_(df.voidage_),
     K_(df.K_),
     coupling_(df.coupling_),

@@ -3,6 +3,7 @@
 
 #include "ConvectionHeatTransfer.H"
 #include "coarseGrainFactor.H"
+#include "knownKeywords.H"
 
 template<class CloudType>
 Foam::dictionary Foam::ConvectionHeatTransfer<CloudType>::withoutBird
@@ -26,6 +27,7 @@ Foam::dictionary Foam::ConvectionHeatTransfer<CloudType>::withoutBird
             << " must be false: the parcels exchange no mass"
             << exit(FatalIOError);
     }
+    knownKeywords::check(given, {"law", "voidage", "BirdCorrection"});
     dictionary patched(dict);
     patched.subDict(coeffs).set("BirdCorrection", false);
     return patched;
