@@ -361,7 +361,7 @@ Foam::scalar Foam::LatticeBedInjection<CloudType>::timeEnd() const
 
 
 template<class CloudType>
-Foam::label Foam::LatticeBedInjection<CloudType>::parcelsToInject
+bool Foam::LatticeBedInjection<CloudType>::placesNow
 (
     const scalar time0,
     const scalar time1
@@ -373,9 +373,20 @@ Foam::label Foam::LatticeBedInjection<CloudType>::parcelsToInject
         {
             place();
         }
-        return positions_.size();
+        return true;
     }
-    return 0;
+    return false;
+}
+
+
+template<class CloudType>
+Foam::label Foam::LatticeBedInjection<CloudType>::parcelsToInject
+(
+    const scalar time0,
+    const scalar time1
+)
+{
+    return placesNow(time0, time1) ? positions_.size() : 0;
 }
 
 
@@ -386,15 +397,7 @@ Foam::scalar Foam::LatticeBedInjection<CloudType>::volumeToInject
     const scalar time1
 )
 {
-    if (time0 <= 0 && time1 > 0)
-    {
-        if (!placed_)
-        {
-            place();
-        }
-        return localVolume_;
-    }
-    return 0;
+    return placesNow(time0, time1) ? localVolume_ : 0;
 }
 
 
