@@ -60,6 +60,7 @@ Foam::DEMCloud<CloudType>::DEMCloud
     CloudType(cloudName, rho, U, g, thermo, false),
     massChecked_(false),
     placedBed_(false),
+    restartStream_(true),
     convection_(nullptr)
 {
     if (this->solution().active())
@@ -229,6 +230,14 @@ void Foam::DEMCloud<CloudType>::evolve()
         // totals (the cloud's "Parcel fate: escape" also counts rebounds)
         const label n0 = returnReduce(this->size(), sumOp<label>());
         const label added0 = parcelsInjected();
+
+        // The stream of a fresh start (index 0) is OpenFOAM's own
+        const label index0 = this->db().time().timeIndex() - 1;
+        if (restartStream_ && index0 > 0)
+        {
+            restartRandomStream(index0);
+        }
+        restartStream_ = this->db().time().writeTime();
         const label placed0 = parcelsPlaced();
 
         typename parcelType::trackingData td(*this);
@@ -241,6 +250,17 @@ void Foam::DEMCloud<CloudType>::evolve()
         Info<< "    Parcels: " << n1 << " (" << added << " injected, "
             << n0 + added - n1 << " left the domain in this step)" << endl;
     }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::restartRandomStream(const label writtenIndex)
+{
+    // A 31-bit seed: the index modulo a prime below 2^21, times 1024,
+    // plus the processor number modulo 1024
+    const label seed =
+        (writtenIndex % 2097143)*1024 + Pstream::myProcNo() % 1024;
+    this->rndGen() = Random(seed);
 }
 
 
