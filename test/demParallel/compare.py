@@ -82,6 +82,16 @@ for a, ua, Ta in zip(xs, us, Ts):
     du = max(du, math.dist(ua, up[k]))
     dT = max(dT, abs(Ta[0] - Tp[k][0]))
 check(len(used) == len(xs), 'one-to-one match of the beads')
+
+# ... decomposed, run and reconstructed: no contact record lost or gained,
+# bead by bead (the first number of a bead's row is its record count)
+cs = [int(r[0]) for r in rows('serial', 0.02, 'demContactDuration')]
+cp = [int(r[0]) for r in rows('parallel', 0.02, 'demContactDuration')]
+twin = [min(range(len(xp)), key=lambda k: math.dist(a, xp[k])) for a in xs]
+check(sum(cs) > 0 and sum(cs) == sum(cp)
+      and all(cs[i] == cp[k] for i, k in enumerate(twin)),
+      f'2 ranks reconstructed: {sum(cp)} contact records, serial {sum(cs)}, '
+      f'bead by bead equal')
 check(dx <= POSITION_TOL, f'largest position difference {dx:.3g} m '
       f'(tolerance {POSITION_TOL:g} m)')
 check(du <= VELOCITY_TOL, f'largest velocity difference {du:.3g} m/s '

@@ -51,6 +51,7 @@ Description
 #include "incrementSolve.H"
 #include "numberLiterals.H"
 #include "writtenTimes.H"
+#include "cloudInput.H"
 
 int main(int argc, char *argv[])
 {

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "cloudInput.H"
+#include "IOdictionary.H"
+#include "coarseGrainFactor.H"
+#include "knownKeywords.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// A size [m] and, for coarse-grained parcels, the primary size [um]
+std::string sizes(const scalar d, const scalar K)
+{
+    OStringStream os;
+    os.precision(6);
+    os << d << " m";
+    if (K != 1)
+    {
+        os << " (primary " << d/K*1e6 << " um)";
+    }
+    return os.str();
+}
+
+
+void checkConstantProperties(const dictionary& constProps)
+{
+    // Stock keywords of other parcel layers, not read by this cloud
+    const HashTable<string> unread
+    {
+        {"youngsModulus", "the DEM engine's moduli are set per material"
+            " in constant/materialProperties"},
+        {"poissonsRatio", "the DEM engine's moduli are set per material"
+            " in constant/materialProperties"},
+        {"constantVolume", "a reacting parcel's setting; these parcels do"
+            " not react"},
+        {"alphaMax", "a packing limit of OpenFOAM's MPPIC parcels; the"
+            " voidage bound is voidageMin in constant/couplingProperties"}
+    };
+    for (const entry& e : constProps)
+    {
+        const auto iter = unread.cfind(e.keyword());
+        if (iter.found())
+        {
+            FatalIOErrorInFunction(constProps)
+                << "Keyword " << e.keyword() << " in " << constProps.name()
+                << " is not read by this cloud: " << *iter
+                << exit(FatalIOError);
+        }
+    }
+    knownKeywords::check
+    (
+        constProps,
+        {
+            "rho0", "T0", "Cp0", "epsilon0", "f0", "coarseGrainFactor",
+            "parcelTypeId", "rhoMin", "minParcelMass", "TMin", "TMax"
+        }
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
+
+void Foam::cloudInput::checkSizeDistribution
+(
+    const dictionary& sizeDict,
+    const scalar K
+)
+{
+    const word type(sizeDict.get<word>("type"));
+    const dictionary& coeffs = sizeDict.optionalSubDict(type + "Distribution");
+
+    auto positive = [&](const word& key)
+    {
+        scalar v = 0;
+        if (coeffs.readIfPresent(key, v) && !(v > 0))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Size " << key << ' ' << sizes(v, K).c_str() << " in "
+                << coeffs.name() << " must be > 0 (sizes in metres)"
+                << exit(FatalIOError);
+        }
+        return v;
+    };
+    const scalar dMin = positive("minValue");
+    const scalar dMax = positive("maxValue");
+    const bool range = coeffs.found("minValue") && coeffs.found("maxValue");
+    if (range && !(dMin < dMax))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Size range of " << coeffs.name() << ": minValue "
+            << sizes(dMin, K).c_str() << " is not below maxValue "
+            << sizes(dMax, K).c_str()
+            << exit(FatalIOError);
+    }
+    for (const word key : {"expectation", "value", "d"})
+    {
+        const scalar d = positive(key);
+        if (range && coeffs.found(key) && key != "d" && (d < dMin || d > dMax))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Size " << key << ' ' << sizes(d, K).c_str() << " in "
+                << coeffs.name() << " lies outside [minValue, maxValue] = ["
+                << sizes(dMin, K).c_str() << ", " << sizes(dMax, K).c_str() << ']'
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::cloudInput::check(const fvMesh& mesh, const word& cloudName)
+{
+    const IOdictionary props
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    const dictionary& constProps = props.subDict("constantProperties");
+    checkConstantProperties(constProps);
+    const scalar K = coarseGrainFactor(constProps);
+
+    const dictionary* injectors =
+        props.subDict("subModels").findDict("injectionModels");
+    if (injectors)
+    {
+        for (const entry& e : *injectors)
+        {
+            if (e.isDict() && e.dict().isDict("sizeDistribution"))
+            {
+                checkSizeDistribution(e.dict().subDict("sizeDistribution"), K);
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
