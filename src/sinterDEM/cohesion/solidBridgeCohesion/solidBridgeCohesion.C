@@ -106,8 +106,11 @@ void Foam::cohesionModels::solidBridge::Factors::evaluate(const scalar T)
     if (!(T >= 200))
     {
         FatalErrorInFunction
-            << "contact temperature " << T << " K is below 200 K: particle"
-               " temperatures are in kelvin" << exit(FatalError);
+            << "contact temperature " << T << " K is below 200 K: the"
+               " temperature of a particle or, for a particle-wall contact"
+               " with wallTemperature wall, of the wall face (the gas"
+               " temperature's boundary value there); temperatures are in"
+               " kelvin" << exit(FatalError);
     }
     rate_ = law_.neckGrowthRate(1, T);
     strength_ = scale_*law_.forceFromNeck(1, T);
