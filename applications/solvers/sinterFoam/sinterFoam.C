@@ -70,6 +70,7 @@ int main(int argc, char *argv[])
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "createFields.H"
+    writtenTimes::checkParcelsRead(runTime, cloud.nParcels());
 
     Info<< "\nStarting time loop\n" << endl;
 

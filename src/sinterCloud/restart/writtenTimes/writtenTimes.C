@@ -87,3 +87,35 @@ void Foam::writtenTimes::checkStart
             << exit(FatalError);
     }
 }
+
+
+void Foam::writtenTimes::checkParcelsRead
+(
+    const Time& runTime,
+    const label nRead
+)
+{
+    // Every processor takes part (a processor without the marker was
+    // already refused by checkStart)
+    const fileName marker(runTime.timePath()/"uniform"/markerName);
+    const bool marked = isFile(marker);
+    label nWritten = -1;
+    if (marked)
+    {
+        IFstream is(marker);
+        nWritten = dictionary(is).get<label>("parcels");
+    }
+    reduce(nWritten, maxOp<label>());
+    const label nTotal = returnReduce(nRead, sumOp<label>());
+    if (nWritten >= 0 && nTotal != nWritten)
+    {
+        FatalErrorInFunction
+            << "The start time " << runTime.timeName() << " was written"
+            << " with " << nWritten << " parcels, but " << nTotal
+            << " were read from its lagrangian files"
+            << (Pstream::parRun() ? " (over all processors)" : "")
+            << ": a processor's files are missing or cut short." << nl
+            << "Restore the time's lagrangian directories or restart from"
+            << " another time" << exit(FatalError);
+    }
+}
