@@ -50,8 +50,21 @@ const Foam::wordList& Foam::sinterMaterial::keywords()
 Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
 :
     name_(dict.dictName()),
-    rho_(readRange(dict, "density", 0, GREAT, "must be > 0 [kg/m^3]")),
-    Y_(readRange(dict, "youngsModulus", 0, GREAT, "must be > 0 [Pa]")),
+    rho_
+    (
+        readRange
+        (
+            dict, "density", 10, 3e4, "must lie in (10, 3e4) kg/m^3"
+        )
+    ),
+    Y_
+    (
+        readRange
+        (
+            dict, "youngsModulus", 1e3, 1e13, "must lie in (1e3, 1e13) Pa"
+            " (hematite 359e9, Table 2.4)"
+        )
+    ),
     nu_(readRange(dict, "poissonsRatio", -SMALL, 0.5, "must lie in [0, 0.5)")),
     gamma_(readRange(dict, "surfaceTension", 0, GREAT, "must be > 0 [N/m]")),
     delta_(readRange(dict, "latticeConstant", 0, GREAT, "must be > 0 [m]")),
