@@ -65,12 +65,13 @@ int main(int argc, char *argv[])
     numberLiterals::checkCase(args);
     #include "createTime.H"
     #include "checkTimeStep.H"
-    writtenTimes::checkStart(runTime, "cloud");     // the cloud of createFields
+    // The start time whole (the cloud of createFields): its parcels
+    const label nWritten = writtenTimes::checkStart(runTime, "cloud");
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
     #include "createFields.H"
-    writtenTimes::checkParcelsRead(runTime, cloud.nParcels());
+    writtenTimes::checkParcelsRead(runTime, nWritten, cloud.nParcels());
 
     Info<< "\nStarting time loop\n" << endl;
 

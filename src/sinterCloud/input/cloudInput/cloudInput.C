@@ -30,12 +30,15 @@ std::string sizes(const scalar d, const scalar K)
 void checkConstantProperties(const dictionary& constProps)
 {
     // Stock keywords of other parcel layers, not read by this cloud
+    const string moduli
+    (
+        "the DEM engine's moduli are set per material in"
+        " constant/materialProperties"
+    );
     const HashTable<string> unread
     {
-        {"youngsModulus", "the DEM engine's moduli are set per material"
-            " in constant/materialProperties"},
-        {"poissonsRatio", "the DEM engine's moduli are set per material"
-            " in constant/materialProperties"},
+        {"youngsModulus", moduli},
+        {"poissonsRatio", moduli},
         {"constantVolume", "a reacting parcel's setting; these parcels do"
             " not react"},
         {"alphaMax", "a packing limit of OpenFOAM's MPPIC parcels; the"
@@ -99,15 +102,17 @@ void Foam::cloudInput::checkSizeDistribution
             << sizes(dMax, K).c_str()
             << exit(FatalIOError);
     }
-    for (const word key : {"expectation", "value", "d"})
+    positive("d");      // RosinRammler's size scale
+    for (const word key : {"expectation", "value"})
     {
         const scalar d = positive(key);
-        if (range && coeffs.found(key) && key != "d" && (d < dMin || d > dMax))
+        if (range && coeffs.found(key) && (d < dMin || d > dMax))
         {
             FatalIOErrorInFunction(coeffs)
                 << "Size " << key << ' ' << sizes(d, K).c_str() << " in "
                 << coeffs.name() << " lies outside [minValue, maxValue] = ["
-                << sizes(dMin, K).c_str() << ", " << sizes(dMax, K).c_str() << ']'
+                << sizes(dMin, K).c_str() << ", " << sizes(dMax, K).c_str()
+                << ']'
                 << exit(FatalIOError);
         }
     }

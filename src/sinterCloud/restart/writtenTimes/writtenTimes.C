@@ -28,7 +28,7 @@ void Foam::writtenTimes::markComplete
 }
 
 
-void Foam::writtenTimes::checkStart
+Foam::label Foam::writtenTimes::checkStart
 (
     const Time& runTime,
     const word& cloudName
@@ -37,7 +37,7 @@ void Foam::writtenTimes::checkStart
     const fileName dir(runTime.timePath());
     if (!isFile(dir/"uniform"/"time"))
     {
-        return;     // prepared by the user
+        return -1;  // prepared by the user
     }
 
     const fileName marker(dir/"uniform"/markerName);
@@ -86,26 +86,17 @@ void Foam::writtenTimes::checkStart
             << "Restore the file or restart from another time"
             << exit(FatalError);
     }
+    return nParcels;
 }
 
 
 void Foam::writtenTimes::checkParcelsRead
 (
     const Time& runTime,
+    const label nWritten,
     const label nRead
 )
 {
-    // Every processor takes part (a processor without the marker was
-    // already refused by checkStart)
-    const fileName marker(runTime.timePath()/"uniform"/markerName);
-    const bool marked = isFile(marker);
-    label nWritten = -1;
-    if (marked)
-    {
-        IFstream is(marker);
-        nWritten = dictionary(is).get<label>("parcels");
-    }
-    reduce(nWritten, maxOp<label>());
     const label nTotal = returnReduce(nRead, sumOp<label>());
     if (nWritten >= 0 && nTotal != nWritten)
     {

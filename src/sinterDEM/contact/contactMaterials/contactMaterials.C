@@ -117,7 +117,11 @@ Foam::contactMaterials::contactMaterials(const dictionary& dict)
     {
         const dictionary& mat = dict_.subDict(name);
         knownKeywords::check(mat, sinterMaterial::keywords());
-        optionalInRange(mat, "density", 10, 3e4, "kg/m^3");
+        optionalInRange
+        (
+            mat, "density", sinterMaterial::densityMin(),
+            sinterMaterial::densityMax(), "kg/m^3"
+        );
         optionalInRange(mat, "specificHeat", 10, 1e5, "J/(kg K)");
         optionalInRange(mat, "thermalConductivity", 1e-3, 1e4, "W/(m K)");
     }
@@ -275,7 +279,11 @@ Foam::scalar Foam::contactMaterials::modulus
 )
 {
     const scalar value = dict.get<scalar>(key);
-    if (!(value >= 1e3 && value <= 1e13))
+    if
+    (
+        !(value >= sinterMaterial::modulusMin()
+       && value <= sinterMaterial::modulusMax())
+    )
     {
         outOfRange
         (

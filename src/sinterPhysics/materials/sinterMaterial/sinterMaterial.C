@@ -54,15 +54,16 @@ Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
     (
         readRange
         (
-            dict, "density", 10, 3e4, "must lie in (10, 3e4) kg/m^3"
+            dict, "density", densityMin(), densityMax(),
+            "must lie in (10, 3e4) kg/m^3"
         )
     ),
     Y_
     (
         readRange
         (
-            dict, "youngsModulus", 1e3, 1e13, "must lie in (1e3, 1e13) Pa"
-            " (hematite 359e9, Table 2.4)"
+            dict, "youngsModulus", modulusMin(), modulusMax(),
+            "must lie in (1e3, 1e13) Pa (hematite 359e9, Table 2.4)"
         )
     ),
     nu_(readRange(dict, "poissonsRatio", -SMALL, 0.5, "must lie in [0, 0.5)")),

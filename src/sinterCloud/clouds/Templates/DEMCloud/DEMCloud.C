@@ -60,7 +60,6 @@ Foam::DEMCloud<CloudType>::DEMCloud
     CloudType(cloudName, rho, U, g, thermo, false),
     massChecked_(false),
     placedBed_(false),
-    restartStream_(true),
     convection_(nullptr)
 {
     if (this->solution().active())
@@ -208,6 +207,14 @@ Foam::DEMCloud<CloudType>::DEMCloud
         );
         updateBedFields();
     }
+
+    // A run started from a written time draws from that time's stream (a
+    // fresh start, index 0, keeps OpenFOAM's own)
+    const label startIndex = this->db().time().timeIndex();
+    if (startIndex > 0)
+    {
+        restartRandomStream(startIndex);
+    }
 }
 
 
@@ -230,14 +237,6 @@ void Foam::DEMCloud<CloudType>::evolve()
         // totals (the cloud's "Parcel fate: escape" also counts rebounds)
         const label n0 = returnReduce(this->size(), sumOp<label>());
         const label added0 = parcelsInjected();
-
-        // The stream of a fresh start (index 0) is OpenFOAM's own
-        const label index0 = this->db().time().timeIndex() - 1;
-        if (restartStream_ && index0 > 0)
-        {
-            restartRandomStream(index0);
-        }
-        restartStream_ = this->db().time().writeTime();
         const label placed0 = parcelsPlaced();
 
         typename parcelType::trackingData td(*this);
@@ -247,6 +246,12 @@ void Foam::DEMCloud<CloudType>::evolve()
         const label n1 = returnReduce(this->size(), sumOp<label>());
         const label added = parcelsInjected() - added0;
         placedBed_ = parcelsPlaced() > placed0;
+
+        // This step is written: the next one draws from its time's stream
+        if (this->db().time().writeTime())
+        {
+            restartRandomStream(this->db().time().timeIndex());
+        }
         Info<< "    Parcels: " << n1 << " (" << added << " injected, "
             << n0 + added - n1 << " left the domain in this step)" << endl;
     }
