@@ -8,6 +8,7 @@
 #include "OFstream.H"
 #include <algorithm>
 #include <map>
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -85,21 +86,21 @@ bool Foam::functionObjects::agglomerateStatistics::read
 
     if (!(minContactTime_ >= 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "minContactTime")
             << "Keyword minContactTime of " << name() << " is the least"
             << " contact time [s] of an agglomerate's contact and must be"
             << " >= 0, not " << minContactTime_ << exit(FatalIOError);
     }
     if (minSize_ < 2)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "minSize")
             << "Keyword minSize of " << name() << " is the least number of"
             << " parcels of an agglomerate and must be >= 2, not "
             << minSize_ << exit(FatalIOError);
     }
     if (bridgedOnly_ && engine->cohesion().bridgeSlot() < 0)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "bridgedOnly")
             << "Keyword bridgedOnly of " << name() << " needs a cohesion"
             << " model with bridges (cohesionModel solidBridge), not "
             << engine->cohesion().type() << exit(FatalIOError);

@@ -7,6 +7,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
 #include "boundedKeyword.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -30,7 +31,7 @@ static Foam::label requiredPatch
     const Foam::label patchi = mesh.boundaryMesh().findPatchID(name);
     if (patchi < 0)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Unknown patch " << name << " for keyword " << key << Foam::nl
             << "Valid patches are " << mesh.boundaryMesh().names()
             << Foam::exit(Foam::FatalIOError);

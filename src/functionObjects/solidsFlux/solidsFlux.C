@@ -8,6 +8,7 @@
 #include "gravityMeshObject.H"
 #include "OFstream.H"
 #include "mathematicalConstants.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -134,7 +135,7 @@ bool Foam::functionObjects::solidsFlux::read(const dictionary& dict)
     axis_ = dict.lookupOrDefault<vector>("axis", vector(1, 0, 0));
     if (mag(axis_) < VSMALL || mag(axis_ & up_) > 1e-6*mag(axis_))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "axis")
             << "Keyword axis of " << name() << " must be a horizontal"
             << " direction (normal to g = " << g << "), not " << axis_
             << exit(FatalIOError);

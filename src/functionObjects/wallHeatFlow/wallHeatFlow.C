@@ -7,6 +7,7 @@
 #include "wallPolyPatch.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -75,7 +76,7 @@ bool Foam::functionObjects::wallHeatFlow::read(const dictionary& dict)
             );
             if (matched.empty())
             {
-                FatalIOErrorInFunction(dict)
+                FatalIOErrorInKeyword(dict, "patches")
                     << "No patch matches " << name << " of keyword patches"
                     << nl << "Valid patches are " << pbm.names()
                     << exit(FatalIOError);

@@ -3,6 +3,7 @@
 
 #include "demEngine.H"
 #include <utility>
+#include "keywordSource.H"
 
 namespace
 {
@@ -131,7 +132,7 @@ Foam::demEngine::demEngine
 {
     if (!(skinFraction_ > 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "skin")
             << "Keyword skin in " << dict.name()
             << " must be positive, not " << skinFraction_
             << exit(FatalIOError);

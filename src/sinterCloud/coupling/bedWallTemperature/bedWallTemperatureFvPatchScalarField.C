@@ -6,6 +6,7 @@
 #include "volFields.H"
 #include "basicThermo.H"
 #include "contactMaterials.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -25,7 +26,7 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
     h_ = dict.get<scalar>("h");
     if (!(h_ > 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "h")
             << "h " << h_ << " in " << dict.name()
             << ": the bed-to-wall heat transfer coefficient must be > 0"
                " W/(m^2 K)" << exit(FatalIOError);
@@ -34,7 +35,7 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
     Text_ = dict.get<scalar>("Text");
     if (!(Text_ >= 200))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "Text")
             << "Text " << Text_ << " in " << dict.name()
             << " is below 200 K: temperatures are in kelvin"
             << exit(FatalIOError);

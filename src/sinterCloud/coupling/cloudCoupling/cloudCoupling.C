@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "cloudCoupling.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -18,7 +19,7 @@ Foam::scalar readVoidageMin(const Foam::dictionary& dict)
     const scalar value = dict.get<scalar>("voidageMin");
     if (value <= 0 || value >= 1)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "voidageMin")
             << "voidageMin " << value << " must lie in (0, 1)"
             << exit(FatalIOError);
     }
@@ -35,7 +36,7 @@ bool readLocalGasTemperature(const Foam::dictionary& dict)
     );
     if (kind != "smoothed" && kind != "local")
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "parcelGasTemperature")
             << "Unknown parcelGasTemperature " << kind << nl
             << "Valid types are (smoothed local)"
             << exit(FatalIOError);

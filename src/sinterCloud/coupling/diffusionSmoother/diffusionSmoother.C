@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "diffusionSmoother.H"
+#include "keywordSource.H"
 
 Foam::diffusionSmoother::diffusionSmoother
 (
@@ -15,7 +16,7 @@ Foam::diffusionSmoother::diffusionSmoother
 {
     if (!(length_ > 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "smoothingLength")
             << "smoothingLength " << length_ << " must be > 0 [m]"
             << exit(FatalIOError);
     }
@@ -24,7 +25,7 @@ Foam::diffusionSmoother::diffusionSmoother
     const scalar diagonal = mesh.bounds().mag();
     if (length_ > diagonal)
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "smoothingLength")
             << "smoothingLength " << length_ << " [m] is longer than the"
             << " domain's diagonal " << diagonal << " m" << nl
             << "It would spread every source over the whole domain (lengths"

@@ -5,6 +5,7 @@
 #include "IOdictionary.H"
 #include "coarseGrainFactor.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -49,7 +50,7 @@ void checkConstantProperties(const dictionary& constProps)
         const auto iter = unread.cfind(e.keyword());
         if (iter.found())
         {
-            FatalIOErrorInFunction(constProps)
+            FatalIOErrorInKeyword(constProps, e.keyword())
                 << "Keyword " << e.keyword() << " in " << constProps.name()
                 << " is not read by this cloud: " << *iter
                 << exit(FatalIOError);
@@ -84,7 +85,7 @@ void Foam::cloudInput::checkSizeDistribution
         scalar v = 0;
         if (coeffs.readIfPresent(key, v) && !(v > 0))
         {
-            FatalIOErrorInFunction(coeffs)
+            FatalIOErrorInKeyword(coeffs, key)
                 << "Size " << key << ' ' << sizes(v, K).c_str() << " in "
                 << coeffs.name() << " must be > 0 (sizes in metres)"
                 << exit(FatalIOError);
@@ -96,7 +97,7 @@ void Foam::cloudInput::checkSizeDistribution
     const bool range = coeffs.found("minValue") && coeffs.found("maxValue");
     if (range && !(dMin < dMax))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "minValue")
             << "Size range of " << coeffs.name() << ": minValue "
             << sizes(dMin, K).c_str() << " is not below maxValue "
             << sizes(dMax, K).c_str()
@@ -108,7 +109,7 @@ void Foam::cloudInput::checkSizeDistribution
         const scalar d = positive(key);
         if (range && coeffs.found(key) && (d < dMin || d > dMax))
         {
-            FatalIOErrorInFunction(coeffs)
+            FatalIOErrorInKeyword(coeffs, key)
                 << "Size " << key << ' ' << sizes(d, K).c_str() << " in "
                 << coeffs.name() << " lies outside [minValue, maxValue] = ["
                 << sizes(dMin, K).c_str() << ", " << sizes(dMax, K).c_str()

@@ -3,6 +3,7 @@
 
 #include "solidBridgeCohesion.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 #include "contactLaw.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -57,7 +58,7 @@ void checkKeywords(const Foam::dictionary& coeffs)
 {
     if (coeffs.found("material"))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "material")
             << "Keyword material in " << coeffs.name()
             << " is no longer read: the sintering data are those of the"
             << " particles' material in constant/materialProperties"
@@ -90,7 +91,7 @@ EnumType readChoice
     );
     if (!names.found(name))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, key)
             << "Unknown " << key << " " << name << " in " << coeffs.name()
             << Foam::nl << "Valid " << key << " values are " << names
             << Foam::exit(Foam::FatalIOError);
@@ -160,7 +161,7 @@ Foam::cohesionModels::solidBridge::solidBridge
 
     if (activationTime_ < 0)
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInKeyword(coeffs_, "activationTime")
             << "activationTime " << activationTime_ << " must be >= 0 [s]"
             << exit(FatalIOError);
     }

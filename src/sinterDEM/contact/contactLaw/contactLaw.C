@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactLaw.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -20,7 +21,7 @@ void checkNoMaterials(const Foam::dictionary& dict)
     {
         if (dict.found(key))
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, key)
                 << "Keyword " << key << " in " << dict.name()
                 << " is no longer read: the elastic data of the particles"
                 << " and walls are in constant/materialProperties"

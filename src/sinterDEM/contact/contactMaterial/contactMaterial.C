@@ -5,6 +5,7 @@
 #include "effectiveProperties.H"
 #include "contactMaterials.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 
 
 Foam::contactMaterial::contactMaterial(const dictionary& dict)
@@ -20,7 +21,7 @@ Foam::contactMaterial::contactMaterial(const dictionary& dict)
 {
     if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "poissonsRatio")
             << "Keyword poissonsRatio in " << dict.name()
             << " must lie in (-1, 0.5), not " << poissonsRatio_
             << exit(FatalIOError);
@@ -88,21 +89,21 @@ Foam::contactProperties::contactProperties
     knownKeywords::check(dict, {"restitution", "friction", "rollingFriction"});
     if (!(restitution_ > 0 && restitution_ <= 1))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "restitution")
             << "Keyword restitution in " << dict.name()
             << " must lie in (0, 1], not " << restitution_
             << exit(FatalIOError);
     }
     if (!(friction_ >= 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "friction")
             << "Keyword friction in " << dict.name()
             << " must not be negative, not " << friction_
             << exit(FatalIOError);
     }
     if (!(rollingFriction_ >= 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "rollingFriction")
             << "Keyword rollingFriction in " << dict.name()
             << " must not be negative, not " << rollingFriction_
             << exit(FatalIOError);

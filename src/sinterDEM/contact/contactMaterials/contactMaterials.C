@@ -8,6 +8,7 @@
 #include "IOdictionary.H"
 #include "Time.H"
 #include "StringStream.H"
+#include "keywordSource.H"
 
 namespace
 {
@@ -31,7 +32,7 @@ Foam::word materialName(const Foam::entry& e, const Foam::dictionary& walls)
 {
     if (e.isDict())
     {
-        FatalIOErrorInFunction(walls)
+        FatalIOErrorInKeyword(walls, e.keyword())
             << "Entry " << e.keyword() << " of " << walls.name()
             << " must name a material of the file, not give a dictionary"
             << Foam::exit(Foam::FatalIOError);
@@ -52,7 +53,7 @@ void outOfRange
     const char* hint = ""
 )
 {
-    FatalIOErrorInFunction(dict)
+    FatalIOErrorInKeyword(dict, key)
         << "Keyword " << key << " in " << dict.name() << " must lie in "
         << range.c_str() << ", not " << value << hint
         << Foam::exit(Foam::FatalIOError);
@@ -94,7 +95,7 @@ const Foam::dictionary& Foam::contactMaterials::material
     const dictionary* matPtr = dict_.findDict(name, keyType::LITERAL);
     if (!matPtr || name == "walls")
     {
-        FatalIOErrorInFunction(from)
+        FatalIOErrorInKeyword(from, key)
             << "Unknown material " << name << " for keyword " << key
             << " in " << from.name() << nl
             << "Valid materials are " << materialNames(dict_)
@@ -201,7 +202,7 @@ void Foam::contactMaterials::checkHeatCapacity
     const scalar expected = particleHeatCapacity();
     if (mag(value - expected) > 1e-12*mag(expected))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Keyword " << key << " " << value << " in " << dict.name()
             << " is not the particles' scaled heat capacity " << expected
             << " (specificHeat times heatCapacityScale of " << dict_.name()
@@ -226,7 +227,7 @@ void Foam::contactMaterials::checkSame
     const scalar expected = mat.get<scalar>(materialKey);
     if (mag(value - expected) > 1e-12*mag(expected))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Keyword " << key << " " << value << " in " << dict.name()
             << " is not the " << materialKey << " " << expected
             << " of the particles' material in " << mat.name() << nl
@@ -264,7 +265,7 @@ Foam::scalar Foam::contactMaterials::positive
     const scalar value = dict.get<scalar>(key);
     if (!(value > 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Keyword " << key << " in " << dict.name()
             << " must be positive, not " << value << exit(FatalIOError);
     }

@@ -4,6 +4,7 @@
 #include "linearSpringDashpot.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -28,7 +29,7 @@ Foam::scalar readNonNegative
     const Foam::scalar value = dict.get<Foam::scalar>(key);
     if (strictlyPositive ? !(value > 0) : !(value >= 0))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Keyword " << key << " in " << dict.name() << " must be "
             << (strictlyPositive ? "positive" : "non-negative")
             << ", not " << value << Foam::exit(Foam::FatalIOError);

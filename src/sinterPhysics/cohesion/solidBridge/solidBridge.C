@@ -3,6 +3,7 @@
 
 #include "solidBridge.H"
 #include "mathematicalConstants.H"
+#include "keywordSource.H"
 
 namespace
 {
@@ -61,7 +62,7 @@ Foam::solidBridge::solidBridge
     {
         if (!surfaceModelNames.found(t.wordToken()))
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "C")
                 << "Unknown C " << t.wordToken() << nl
                 << "Valid names are " << surfaceModelNames
                 << " (or a value >= 0)" << exit(FatalIOError);
@@ -73,13 +74,13 @@ Foam::solidBridge::solidBridge
         C_ = t.number();
         if (C_ < 0)
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "C")
                 << "C " << C_ << " must be >= 0" << exit(FatalIOError);
         }
     }
     else
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "C")
             << "C must be a surface model " << surfaceModelNames
             << " or a value >= 0, not " << t << exit(FatalIOError);
     }
@@ -99,7 +100,7 @@ Foam::solidBridge::solidBridge
         }
         else
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "curvatureRadius")
                 << "curvatureRadius must be particleRadius or a length > 0"
                    " [m], not " << at << exit(FatalIOError);
         }

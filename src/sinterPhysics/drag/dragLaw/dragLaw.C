@@ -4,6 +4,7 @@
 #include "dragLaw.H"
 #include "error.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -58,7 +59,7 @@ Foam::autoPtr<Foam::dragLaw> Foam::dragLaw::New
                     withCorrection.append(name);
                 }
             }
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "polydisperse")
                 << "Keyword polydisperse true in " << dict.name()
                 << ": drag law " << lawName
                 << " has no polydisperse correction" << nl

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <vector>
+#include "keywordSource.H"
 
 Foam::label Foam::knownKeywords::editDistance
 (
@@ -70,7 +71,7 @@ void Foam::knownKeywords::check
             continue;
         }
         const word guess(nearest(key, valid));
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Unknown keyword " << key << " in " << dict.name();
         if (!guess.empty())
         {

@@ -5,6 +5,7 @@
 #include "knownKeywords.H"
 #include "TableBase.H"
 #include "IOmanip.H"
+#include "keywordSource.H"
 
 namespace
 {
@@ -23,7 +24,7 @@ Foam::scalar readRange
 
     if (!(value > lower && value < upper))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << key << " " << value << " invalid: " << what
             << Foam::exit(Foam::FatalIOError);
     }

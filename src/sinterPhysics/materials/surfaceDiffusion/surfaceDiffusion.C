@@ -3,6 +3,7 @@
 
 #include "surfaceDiffusion.H"
 #include "FixedList.H"
+#include "keywordSource.H"
 
 namespace
 {
@@ -19,7 +20,7 @@ Foam::surfaceDiffusion::surfaceDiffusion(const dictionary& dict)
 
     if (ranges.empty())
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "surfaceDiffusion")
             << "surfaceDiffusion: give at least one range"
                " (T_upper [K] D_0s [m^2/s] E_s [J/mol])"
             << exit(FatalIOError);
@@ -41,7 +42,7 @@ Foam::surfaceDiffusion::surfaceDiffusion(const dictionary& dict)
          || (i > 0 && Tupper_[i] <= Tupper_[i-1])
         )
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "surfaceDiffusion")
                 << "surfaceDiffusion: range " << i << " " << ranges[i]
                 << " invalid: need T_upper > 0 and increasing [K],"
                    " D_0s > 0 [m^2/s], E_s >= 0 [J/mol]"

@@ -10,6 +10,7 @@
 #include "patchInteractionDataList.H"
 #include "ZehnerSchlunder.H"
 #include "LatticeBedInjection.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -147,7 +148,7 @@ Foam::DEMCloud<CloudType>::DEMCloud
                  && !(e.dict().get<scalar>("nParticle") > 0)
                 )
                 {
-                    FatalIOErrorInFunction(e.dict())
+                    FatalIOErrorInKeyword(e.dict(), "nParticle")
                         << "Keyword nParticle of injector " << e.keyword()
                         << " in " << e.dict().name() << " must be > 0, not "
                         << e.dict().get<scalar>("nParticle")

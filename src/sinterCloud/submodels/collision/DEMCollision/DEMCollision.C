@@ -9,6 +9,7 @@
 #include "volFields.H"
 #include "IOdictionary.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 
 template<class CloudType>
 Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
@@ -23,7 +24,7 @@ Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
         ids = patches.patchSet(names);
         if (ids.empty())
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInKeyword(dict, "walls")
                 << "Keyword walls in " << dict.name() << " matches no patch."
                 << " Valid patches are " << patches.names()
                 << exit(FatalIOError);
@@ -76,7 +77,7 @@ const Foam::dictionary& Foam::DEMCollision<CloudType>::coeffDict
     const word model(subModels.get<word>("collisionModel"));
     if (model != typeName)
     {
-        FatalIOErrorInFunction(subModels)
+        FatalIOErrorInKeyword(subModels, "collisionModel")
             << "Unknown collisionModel type " << model << " in "
             << subModels.name() << nl << nl
             << "Valid collisionModel types are" << nl
@@ -142,7 +143,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
     }
     if (hasStep && !(deltaT_ > 0))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "deltaT")
             << "Keyword deltaT in " << coeffs.name()
             << " must be positive, not " << deltaT_
             << exit(FatalIOError);
@@ -153,7 +154,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
      && !(fraction_ > 0 && fraction_ <= maxCollisionTimeFraction)
     )
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "collisionTimeFraction")
             << "Keyword collisionTimeFraction in " << coeffs.name()
             << " must lie in (0, " << maxCollisionTimeFraction
             << "], not " << fraction_
@@ -161,7 +162,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
     }
     if (!(impactVelocity_ >= 0.01 && impactVelocity_ <= 100))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "impactVelocity")
             << "Keyword impactVelocity in " << coeffs.name()
             << " must lie in [0.01, 100] m/s, not " << impactVelocity_ << nl
             << "It is the approach speed of the collision time t_c that"
@@ -192,7 +193,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
         const scalar T0 = constProps.get<scalar>("T0");
         if (!(T0 >= 200))
         {
-            FatalIOErrorInFunction(constProps)
+            FatalIOErrorInKeyword(constProps, "T0")
                 << "Keyword T0 = " << T0 << " K in " << constProps.name()
                 << " is below 200 K: temperatures are in kelvin"
                 << exit(FatalIOError);
@@ -244,7 +245,7 @@ Foam::DEMCollision<CloudType>::DEMCollision
             }
             if (!found)
             {
-                FatalIOErrorInFunction(conductionDict)
+                FatalIOErrorInKeyword(conductionDict, "adiabaticWalls")
                     << "adiabaticWalls entry " << entry << " in "
                     << conductionDict.name() << " matches no DEM wall patch."
                     << " Valid patches are " << wallNames
@@ -378,7 +379,7 @@ Foam::label Foam::DEMCollision<CloudType>::nSubSteps(const scalar dt) const
 
     if (step > maxCollisionTimeFraction*tc*(1 + 1e-12))
     {
-        FatalIOErrorInFunction(coeffs_)
+        FatalIOErrorInKeyword(coeffs_, "deltaT")
             << "Keyword deltaT " << step << " s in "
             << coeffs_.name() << " is larger than "
             << maxCollisionTimeFraction << " of the collision time "

@@ -6,6 +6,7 @@
 #include "coarseGrainFactor.H"
 #include "mathematicalConstants.H"
 #include "FlatOutput.H"
+#include "keywordSource.H"
 
 template<class CloudType>
 const Foam::volScalarField& Foam::VoidageDragForce<CloudType>::voidageField
@@ -17,7 +18,7 @@ const Foam::volScalarField& Foam::VoidageDragForce<CloudType>::voidageField
     const word name(dict.lookupOrDefault<word>("voidage", "voidage"));
     if (!mesh.foundObject<volScalarField>(name))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "voidage")
             << "Keyword voidage in " << dict.name() << " names no field: "
             << name << nl << "The volScalarFields are "
             << flatOutput(mesh.sortedNames<volScalarField>())

@@ -4,6 +4,7 @@
 #include "ConvectionHeatTransfer.H"
 #include "coarseGrainFactor.H"
 #include "knownKeywords.H"
+#include "keywordSource.H"
 
 template<class CloudType>
 Foam::dictionary Foam::ConvectionHeatTransfer<CloudType>::withoutBird
@@ -22,7 +23,7 @@ Foam::dictionary Foam::ConvectionHeatTransfer<CloudType>::withoutBird
     const dictionary& given = dict.subDict(coeffs);
     if (given.lookupOrDefault<bool>("BirdCorrection", false))
     {
-        FatalIOErrorInFunction(given)
+        FatalIOErrorInKeyword(given, "BirdCorrection")
             << "Keyword BirdCorrection in " << given.name()
             << " must be false: the parcels exchange no mass"
             << exit(FatalIOError);

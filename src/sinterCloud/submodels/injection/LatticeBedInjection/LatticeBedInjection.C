@@ -11,6 +11,7 @@
 #include "processorPolyPatch.H"
 #include "Random.H"
 #include "DynamicList.H"
+#include "keywordSource.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -28,7 +29,7 @@ Foam::scalar Foam::LatticeBedInjection<CloudType>::bounded
     const scalar value = dict.lookupOrDefault<scalar>(key, deflt);
     if (!(value >= lo && (hiOpen ? value < hi : value <= hi)))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, key)
             << "Keyword " << key << " in " << dict.name() << " must lie in ["
             << lo << ", " << hi << (hiOpen ? ")" : "]") << ", not " << value
             << exit(FatalIOError);
@@ -282,7 +283,7 @@ Foam::LatticeBedInjection<CloudType>::LatticeBedInjection
 
     if (this->parcelBasis_ != InjectionModel<CloudType>::pbFixed)
     {
-        FatalIOErrorInFunction(cd)
+        FatalIOErrorInKeyword(cd, "parcelBasisType")
             << "Keyword parcelBasisType in " << cd.name()
             << " must be fixed for a latticeBed injection (its parcels each"
             << " hold nParticle particles; massTotal sets how many)"
@@ -290,13 +291,13 @@ Foam::LatticeBedInjection<CloudType>::LatticeBedInjection
     }
     if (!(this->nParticleFixed_ > 0))
     {
-        FatalIOErrorInFunction(cd)
+        FatalIOErrorInKeyword(cd, "nParticle")
             << "Keyword nParticle in " << cd.name() << " must be > 0, not "
             << this->nParticleFixed_ << exit(FatalIOError);
     }
     if (owner.solution().active() && !(this->massTotal_ > 0))
     {
-        FatalIOErrorInFunction(cd)
+        FatalIOErrorInKeyword(cd, "massTotal")
             << "Keyword massTotal in " << cd.name() << " must be > 0 kg, not "
             << this->massTotal_ << exit(FatalIOError);
     }
@@ -305,7 +306,7 @@ Foam::LatticeBedInjection<CloudType>::LatticeBedInjection
         cd.readEntry("box", box_);
         if (!(box_.span() > vector::zero))
         {
-            FatalIOErrorInFunction(cd)
+            FatalIOErrorInKeyword(cd, "box")
                 << "Keyword box in " << cd.name()
                 << " must be (min max) with min < max, not " << box_
                 << exit(FatalIOError);

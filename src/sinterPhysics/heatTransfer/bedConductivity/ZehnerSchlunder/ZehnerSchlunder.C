@@ -3,6 +3,7 @@
 
 #include "ZehnerSchlunder.H"
 #include "mathematicalConstants.H"
+#include "keywordSource.H"
 
 const Foam::Enum<Foam::ZehnerSchlunder::solidContribution>
 Foam::ZehnerSchlunder::solidContributionNames
@@ -28,7 +29,7 @@ Foam::ZehnerSchlunder::solidContribution readSolids
     );
     if (!ZehnerSchlunder::solidContributionNames.found(name))
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInKeyword(dict, "solidContribution")
             << "Unknown solidContribution " << name << " in " << dict.name()
             << nl << nl << "Valid solidContribution types are" << nl
             << ZehnerSchlunder::solidContributionNames << exit(FatalIOError);

@@ -5,6 +5,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "keywordSource.H"
 
 namespace Foam
 {
@@ -57,7 +58,7 @@ Foam::indirectConductions::RongHorio::RongHorio
     if (!(s_ > 0))
     {
         const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "minimumDistance")
             << "Keyword minimumDistance in " << coeffs.name() << " is the"
             << " minimum conduction distance s [m] and must be > 0, not "
             << s_ << exit(FatalIOError);

@@ -3,6 +3,7 @@
 
 #include "gasLens.H"
 #include "error.H"
+#include "keywordSource.H"
 
 
 Foam::indirectConductions::gasLens::gasLens
@@ -22,7 +23,7 @@ Foam::indirectConductions::gasLens::gasLens
     const dictionary& coeffs = dict.optionalSubDict(law + "Coeffs");
     if (!(lensRadius_ > 1))
     {
-        FatalIOErrorInFunction(coeffs)
+        FatalIOErrorInKeyword(coeffs, "lensRadius")
             << "Keyword lensRadius in " << coeffs.name() << " is r_lens/r_p"
             << " and must be > 1 (the lens surrounds the particle), not "
             << lensRadius_ << exit(FatalIOError);
