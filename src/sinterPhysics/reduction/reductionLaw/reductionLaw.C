@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+
+#include "reductionLaw.H"
+#include "error.H"
+#include "knownKeywords.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(reductionLaw, 0);
+    defineRunTimeSelectionTable(reductionLaw, dictionary);
+}
+
+
+Foam::autoPtr<Foam::reductionLaw> Foam::reductionLaw::New
+(
+    const dictionary& dict
+)
+{
+    const word lawName(dict.get<word>("law"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawName);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "law",
+            lawName,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    autoPtr<reductionLaw> law(cstrIter()(dict));
+
+    wordList valid(law->keywords());
+    valid.append(word("law"));
+    knownKeywords::check(dict, valid);
+
+    return law;
+}
