@@ -3,6 +3,7 @@
 
 #include "HancockSharp.H"
 #include "keywordSource.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <cmath>
@@ -23,6 +24,21 @@ namespace
 {
 
 using namespace Foam;
+
+//- The keywords of the law's dictionary besides law
+const Foam::wordList lawKeywords({"k0", "activationEnergy", "n", "hydrogenOrder"});
+
+
+//- dict, its keywords checked first (a misspelt one is named, not reported
+//  as a missing one)
+const dictionary& checked(const dictionary& dict)
+{
+    wordList valid(lawKeywords);
+    valid.append(word("law"));
+    knownKeywords::check(dict, valid);
+    return dict;
+}
+
 
 //- The value of key, which must lie in [lo, hi] (finite)
 scalar inRange
@@ -52,7 +68,7 @@ scalar inRange
 
 Foam::reductionLaws::HancockSharp::HancockSharp(const dictionary& dict)
 :
-    k0_(dict.get<scalar>("k0")),
+    k0_(checked(dict).get<scalar>("k0")),
     Ea_(inRange(dict, "activationEnergy", 0, 1e6, "J/mol")),
     m_(inRange(dict, "hydrogenOrder", 0, 5, "(the order of k in the hydrogen mole fraction)")),
     nT_(),
@@ -126,7 +142,7 @@ Foam::reductionLaws::HancockSharp::HancockSharp(const dictionary& dict)
 
 Foam::wordList Foam::reductionLaws::HancockSharp::keywords() const
 {
-    return wordList({"k0", "activationEnergy", "n", "hydrogenOrder"});
+    return lawKeywords;
 }
 
 

@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    reductionDegree
+
+Group
+    sinterFoam/utilities
+
+Description
+    The hydrogen reduction of a well-mixed bed of iron-oxide powder (0-D):
+    every particle at the same temperature and hydrogen mole fraction, the
+    reduction degree X (thesis eq 3.1) against time from a reduction law
+    (reductionLaw: HancockSharp, eq 3.2-3.4) and the powder's oxide path
+    (ironOxidePath: phases, mass, hydrogen taken, reaction heat).
+
+    Each run writes postProcessing/reductionDegree/<run>.dat (time [s],
+    [min], X, dX/dt [1/s], metallic iron fraction, phase mass fractions
+    Fe2O3 Fe3O4 FeO Fe, m/m0, H2 taken [mol per kg of oxide], reaction heat
+    [J per kg of oxide]) and the log gives X at the run's end next to the
+    measured value when a run has one (e.g. Table 3.2, 3.3).
+
+    Each step advances X by the law exactly over the write interval, so the
+    curve does not depend on the interval.
+
+Usage
+    reductionDegree [-dict FILE]
+
+    system/reductionDegreeDict (temperatures in kelvin):
+    \table
+        Property      | Description                                       | Required
+        kinetics      | a reductionLaw dictionary (law HancockSharp, ...)  | yes
+        powders       | per powder: ironContent W0(TFe) [-] (ironOxidePath) | yes
+        writeInterval | time between written points [s], > 0               | yes
+        runs          | per run: powder; T [K] >= 200; H2 mole fraction [-] in [0, 1]; duration [s] > 0; X0 initial reduction degree [-] in [0, 1] (default 0); measured X [-] in [0, 1] and source (optional) | yes
+    \endtable
+*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "IOmanip.H"
+#include "numberLiterals.H"
+#include "knownKeywords.H"
+#include "keywordSource.H"
+#include "reductionLaw.H"
+#include "ironOxidePath.H"
+
+using namespace Foam;
+
+namespace
+{
+
+//- The value of key in dict, which must lie in [lo, hi]
+scalar bounded
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar lo,
+    const scalar hi,
+    const char* what
+)
+{
+    const scalar v = dict.get<scalar>(key);
+    if (!(v >= lo && v <= hi))
+    {
+        FatalIOErrorInKeyword(dict, key)
+            << "Keyword " << key << " in " << dict.name() << " must lie in ["
+            << lo << ", " << hi << "]: " << what << ", not " << v
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Reduction degree against time of a well-mixed bed of iron-oxide"
+        " powder in hydrogen (thesis Ch. 3)"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::addOption("dict", "file", "Use alternative reductionDegreeDict");
+
+    #include "setRootCase.H"
+    numberLiterals::checkCase(args);
+    #include "createTime.H"
+
+    const fileName dictPath
+    (
+        args.lookupOrDefault<fileName>
+        (
+            "dict",
+            runTime.system()/"reductionDegreeDict"
+        )
+    );
+
+    IOdictionary dict
+    (
+        IOobject
+        (
+            dictPath,
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        ),
+        nullptr
+    );
+    knownKeywords::check
+    (
+        dict,
+        wordList({"kinetics", "powders", "writeInterval", "runs"})
+    );
+
+    const autoPtr<reductionLaw> law
+    (
+        reductionLaw::New(dict.subDict("kinetics"))
+    );
+    const scalar interval =
+        bounded(dict, "writeInterval", SMALL, GREAT, "a time [s] > 0");
+
+    const dictionary& powders = dict.subDict("powders");
+    const dictionary& runs = dict.subDict("runs");
+    if (runs.toc().empty())
+    {
+        FatalIOErrorInKeyword(dict, "runs")
+            << "runs in " << dict.name() << " lists no run"
+            << exit(FatalIOError);
+    }
+
+    const fileName outDir(runTime.globalPath()/"postProcessing"/"reductionDegree");
+    mkDir(outDir);
+
+    Info<< nl << "run" << tab << "powder" << tab << "T [K]" << tab << "H2"
+        << tab << "t [min]" << tab << "X" << tab << "measured" << tab
+        << "difference" << tab << "source" << nl;
+
+    for (const entry& e : runs)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInKeyword(runs, e.keyword())
+                << "Entry " << e.keyword() << " of " << runs.name()
+                << " must be a run's dictionary" << exit(FatalIOError);
+        }
+        const dictionary& run = e.dict();
+        knownKeywords::check
+        (
+            run,
+            wordList
+            ({
+                "powder", "T", "H2", "duration", "X0", "measured", "source"
+            })
+        );
+
+        const word powderName(run.get<word>("powder"));
+        if (!powders.isDict(powderName))
+        {
+            FatalIOErrorInKeyword(run, "powder")
+                << "Unknown powder " << powderName << " in " << run.name()
+                << nl << "Valid powders are " << powders.sortedToc()
+                << exit(FatalIOError);
+        }
+        const dictionary& powderDict = powders.subDict(powderName);
+        knownKeywords::check(powderDict, wordList({"ironContent"}));
+        const ironOxidePath path(powderDict);
+
+        const scalar T = bounded
+        (
+            run, "T", 200, 3000, "the bed temperature in kelvin"
+        );
+        const scalar yH2 = bounded
+        (
+            run, "H2", 0, 1, "the hydrogen mole fraction"
+        );
+        const scalar duration = bounded
+        (
+            run, "duration", SMALL, GREAT, "a time [s] > 0"
+        );
+        const scalar X0 =
+            run.found("X0")
+          ? bounded(run, "X0", 0, 1, "the initial reduction degree")
+          : 0;
+        const bool measured = run.found("measured");
+        const scalar Xm =
+            measured
+          ? bounded(run, "measured", 0, 1, "a reduction degree")
+          : -1;
+        const string source(run.lookupOrDefault<string>("source", ""));
+
+        OFstream os(outDir/(e.keyword() + ".dat"));
+        os  << "# reductionDegree: powder " << powderName << " (W0 "
+            << path.ironContent() << "), T " << T << " K, H2 " << yH2
+            << ", X0 " << X0 << ", measured "
+            << (measured ? Xm : scalar(-1)) << " at " << duration/60
+            << " min" << (source.empty() ? "" : " (") << source.c_str()
+            << (source.empty() ? "" : ")") << nl
+            << "# t[s] t[min] X dXdt[1/s] metallicIron w_Fe2O3 w_Fe3O4"
+               " w_FeO w_Fe m/m0 H2[mol/kg] heat[J/kg]" << nl;
+
+        scalar X = X0;
+        scalar t = 0;
+        auto write = [&]()
+        {
+            const FixedList<scalar, 4> w = path.phases(X, T);
+            os  << setprecision(8) << t << ' ' << t/60 << ' ' << X << ' '
+                << law->rate(X, T, yH2) << ' ' << path.metallicIron(X, T)
+                << ' ' << w[0] << ' ' << w[1] << ' ' << w[2] << ' ' << w[3]
+                << ' ' << path.massRatio(X) << ' '
+                << (X - X0)*path.oxygen() << ' ' << path.enthalpy(X0, X, T)
+                << nl;
+        };
+        write();
+        while (t < duration*(1 - 1e-12))
+        {
+            const scalar dt = min(interval, duration - t);
+            X = law->advance(X, T, yH2, dt);
+            t += dt;
+            write();
+        }
+
+        Info<< e.keyword() << tab << powderName << tab << T << tab << yH2
+            << tab << duration/60 << tab << setprecision(4) << X;
+        if (measured)
+        {
+            Info<< tab << Xm << tab << setprecision(3)
+                << (Xm > 0 ? 100*(X - Xm)/Xm : scalar(0)) << " %";
+        }
+        else
+        {
+            Info<< tab << "-" << tab << "-";
+        }
+        Info<< tab << source.c_str() << setprecision(6) << nl;
+    }
+
+    Info<< nl << "Written to " << outDir << nl << "End" << endl;
+    return 0;
+}
