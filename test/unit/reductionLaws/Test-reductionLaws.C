@@ -22,12 +22,16 @@ Description
     - the path: pure hematite's first stage ends at 1/9 (the thesis's
       11 %), Table 3.1's powders' hematite fractions, phases summing to 1,
       m/m0 = W0 at X = 1, the total enthalpy the same on both paths
-      (Hess), metallic iron only after the oxide stages.
+      (Hess), metallic iron only after the oxide stages;
+    - a parcel's step (parcelReduction): the mass it loses is the oxygen
+      removed, its heat that of the path, and a step dt at acceleration A
+      is the step A dt at A = 1.
 */
 
 #include "argList.H"
 #include "HancockSharp.H"
 #include "ironOxidePath.H"
+#include "parcelReduction.H"
 #include "unitCheck.H"
 
 using namespace Foam;
@@ -197,6 +201,32 @@ int main(int argc, char *argv[])
         check("the hematite stage is exothermic (-6.03 kJ/mol O)",
             tiny.enthalpy(0, tiny.hematiteEnd(), T500)
            /(tiny.hematiteEnd()*tiny.oxygen()), -6.026e3, 1e-3);
+    }
+
+    // A parcel's step
+    {
+        dictionary reduction;
+        reduction.add("kinetics", tinyLaw(mK));
+        dictionary tiny;
+        tiny.add("ironContent", 0.7219);
+        const parcelReduction real(reduction, tiny);
+        reduction.add("acceleration", 10.0);
+        const parcelReduction fast(reduction, tiny);
+
+        const scalar m = 1e-9, X = 0.3, dt = 60;
+        const parcelReduction::step s = real.advance(X, T500, m, 1, dt);
+        check("parcel: X as the law's", s.X, law.advance(X, T500, 1, dt), 1e-14);
+        check("parcel: mass lost = oxygen removed x M_O", m - s.mass,
+            s.oxygen*ironOxidePath::MO, 1e-9);
+        const scalar m0 = m/(1 - X*(1 - 0.7219));
+        check("parcel: oxygen = m0 (1 - W0)/M_O (X' - X)", s.oxygen,
+            m0*(1 - 0.7219)/ironOxidePath::MO*(s.X - X), 1e-12);
+        check("parcel: heat = m0 dH(X, X')", s.heat,
+            m0*real.path().enthalpy(X, s.X, T500), 1e-12);
+        const parcelReduction::step f = fast.advance(X, T500, m, 1, dt);
+        const parcelReduction::step r10 = real.advance(X, T500, m, 1, 10*dt);
+        check("acceleration 10 over dt = real time over 10 dt", f.X, r10.X, 1e-14);
+        check("... the same oxygen", f.oxygen, r10.oxygen, 1e-14);
     }
 
     Info<< nl << unitTest::nFailed() << " failed" << endl;

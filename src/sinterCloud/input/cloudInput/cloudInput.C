@@ -61,9 +61,23 @@ void checkConstantProperties(const dictionary& constProps)
         constProps,
         {
             "rho0", "T0", "Cp0", "epsilon0", "f0", "coarseGrainFactor",
-            "parcelTypeId", "rhoMin", "minParcelMass", "TMin", "TMax"
+            "parcelTypeId", "rhoMin", "minParcelMass", "TMin", "TMax",
+            "reductionDegree0"
         }
     );
+    scalar X0 = 0;
+    if
+    (
+        constProps.readIfPresent("reductionDegree0", X0)
+     && !(X0 >= 0 && X0 <= 1)
+    )
+    {
+        FatalIOErrorInKeyword(constProps, "reductionDegree0")
+            << "Keyword reductionDegree0 in " << constProps.name()
+            << " is the reduction degree of injected parcels and must lie"
+            << " in [0, 1] (0: the oxide, 1: iron), not " << X0
+            << exit(FatalIOError);
+    }
 }
 
 } // End anonymous namespace

@@ -6,6 +6,11 @@
 
 namespace Foam
 {
+    // The layers below DEMParcel that OpenFOAM's library does not define
+    typedef ReducingParcel<ThermoParcel<KinematicParcel<particle>>>
+        reducingThermoParcel;
+    defineTemplateTypeNameAndDebug(reducingThermoParcel, 0);
+
     defineTemplateTypeNameAndDebug(basicSinterParcel, 0);
     defineTemplateTypeNameAndDebug(Cloud<basicSinterParcel>, 0);
 }

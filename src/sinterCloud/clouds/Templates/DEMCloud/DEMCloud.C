@@ -61,7 +61,8 @@ Foam::DEMCloud<CloudType>::DEMCloud
     CloudType(cloudName, rho, U, g, thermo, false),
     massChecked_(false),
     placedBed_(false),
-    convection_(nullptr)
+    convection_(nullptr),
+    hydrogenMoleFraction_(0)
 {
     if (this->solution().active())
     {
@@ -166,6 +167,9 @@ Foam::DEMCloud<CloudType>::DEMCloud
             )
         );
 
+        // The engine exists: the particles' material is known
+        readReduction();
+
         // The engine exists: the contact fields can be read
         if (readFields)
         {
@@ -215,6 +219,94 @@ Foam::DEMCloud<CloudType>::DEMCloud
     if (startIndex > 0)
     {
         restartRandomStream(startIndex);
+    }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::readReduction()
+{
+    const dictionary* dictPtr =
+        this->particleProperties().subDictPtr("reduction");
+    if (!dictPtr)
+    {
+        return;
+    }
+    const dictionary& dict = *dictPtr;
+
+    reduction_.reset
+    (
+        new parcelReduction
+        (
+            dict,
+            collision_->engine().materials().particleDict(),
+            wordList({"gas", "hydrogenMoleFraction"})
+        )
+    );
+
+    const word gas(dict.get<word>("gas"));
+    if (gas != "uniform")
+    {
+        FatalIOErrorInKeyword(dict, "gas")
+            << "Unknown gas " << gas << " in " << dict.name() << nl
+            << "Valid gas compositions are (uniform)"
+            << exit(FatalIOError);
+    }
+    hydrogenMoleFraction_ = dict.get<scalar>("hydrogenMoleFraction");
+    if (!(hydrogenMoleFraction_ >= 0 && hydrogenMoleFraction_ <= 1))
+    {
+        FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
+            << "Keyword hydrogenMoleFraction in " << dict.name() << " is the"
+            << " hydrogen mole fraction of the gas and must lie in [0, 1],"
+            << " not " << hydrogenMoleFraction_ << exit(FatalIOError);
+    }
+
+    Info<< "    hydrogen reduction: " << reduction_->law().type()
+        << ", iron content W0 " << reduction_->path().ironContent()
+        << ", gas uniform with H2 mole fraction " << hydrogenMoleFraction_
+        << ", chemistry acceleration " << reduction_->acceleration() << endl;
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
+{
+    const scalar dt = this->db().time().deltaTValue();
+    demParticles& P = collision_->engine().particles();
+
+    scalar oxygen = 0, heat = 0, sumX = 0;
+    scalar minX = GREAT, maxX = -GREAT;
+    for (parcelType& p : cloud)
+    {
+        const scalar m = p.mass();
+        const parcelReduction::step s = reduction_->advance
+        (
+            p.reductionDegree(), p.T(), m, hydrogenMoleFraction_, dt
+        );
+        p.reductionDegree() = s.X;
+        p.rho() *= s.mass/m;
+        p.T() -= s.heat/(s.mass*p.Cp());
+        P.setSphere(p.demIndex(), 0.5*p.d(), p.rho());
+
+        oxygen += p.nParticle()*s.oxygen;
+        heat += p.nParticle()*s.heat;
+        sumX += s.X;
+        minX = min(minX, s.X);
+        maxX = max(maxX, s.X);
+    }
+
+    const label n = returnReduce(this->size(), sumOp<label>());
+    Foam::reduce(oxygen, sumOp<scalar>());
+    Foam::reduce(heat, sumOp<scalar>());
+    Foam::reduce(sumX, sumOp<scalar>());
+    Foam::reduce(minX, minOp<scalar>());
+    Foam::reduce(maxX, maxOp<scalar>());
+    if (n)
+    {
+        Info<< "    Reduction: X mean " << sumX/n << " (" << minX << " to "
+            << maxX << "), oxygen removed " << oxygen << " mol, reaction"
+            << " heat " << heat << " J" << endl;
     }
 }
 
@@ -448,6 +540,12 @@ void Foam::DEMCloud<CloudType>::motion
 
     // 1. The engine's particles follow the parcels
     syncParticles(cloud);
+
+    // 1b. The hydrogen reduction, from the state at the start of the step
+    if (reduction_.valid())
+    {
+        reduce(cloud);
+    }
 
     demEngine& engine = collision_->engine();
     demParticles& P = engine.particles();
