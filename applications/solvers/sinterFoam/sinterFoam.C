@@ -52,6 +52,7 @@ Description
 #include "numberLiterals.H"
 #include "writtenTimes.H"
 #include "cloudInput.H"
+#include "ironOxidePath.H"
 
 int main(int argc, char *argv[])
 {
@@ -84,8 +85,12 @@ int main(int argc, char *argv[])
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        // Gas -> cloud: parcels move, collide, take drag and heat
+        // Gas -> cloud: parcels move, collide, take drag and heat (and
+        // hydrogen)
         cloud.evolve();
+        massSource =
+            dimensionedScalar("M_O", dimMass/dimMoles, ironOxidePath::MO)
+           *cloud.oxygenSource();
 
         // Cloud -> gas: voidage from the new parcel positions
         #include "updateVoidage.H"
@@ -103,6 +108,9 @@ int main(int argc, char *argv[])
             // new voidage: conservative, and exact for uniform temperature
             #include "EEqn.H"
         }
+
+        // H2 and H2O with the parcels' sources
+        #include "YEqn.H"
 
         // Gas -> cloud: the parcels follow the change of the gas
         // temperature their implicit heat exchange assumed

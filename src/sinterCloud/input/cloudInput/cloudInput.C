@@ -169,3 +169,28 @@ void Foam::cloudInput::check(const fvMesh& mesh, const word& cloudName)
 
 
 // ************************************************************************* //
+
+
+bool Foam::cloudInput::transportsHydrogen
+(
+    const fvMesh& mesh,
+    const word& cloudName
+)
+{
+    const IOdictionary props
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const dictionary* reduction = props.findDict("reduction");
+    return
+        reduction
+     && reduction->lookupOrDefault<word>("gas", "uniform") == "transported";
+}

@@ -18,6 +18,9 @@ namespace reductionLaws
 }
 
 
+constexpr Foam::scalar Foam::reductionLaws::HancockSharp::R;
+
+
 // * * * * * * * * * * * * * * * Local functions * * * * * * * * * * * * * //
 
 namespace

@@ -30,6 +30,15 @@ constexpr scalar WFe3O4 = 3*MFe/MFe3O4;
 } // End anonymous namespace
 
 
+// The definitions of the constants (C++14: a constant bound to a reference
+// needs one)
+constexpr Foam::scalar Foam::ironOxidePath::MFe;
+constexpr Foam::scalar Foam::ironOxidePath::MO;
+constexpr Foam::scalar Foam::ironOxidePath::MH2;
+constexpr Foam::scalar Foam::ironOxidePath::MH2O;
+constexpr Foam::scalar Foam::ironOxidePath::TWustite;
+
+
 const Foam::FixedList<Foam::word, 4> Foam::ironOxidePath::phaseNames
 ({
     "Fe2O3", "Fe3O4", "FeO", "Fe"

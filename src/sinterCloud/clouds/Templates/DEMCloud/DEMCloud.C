@@ -62,7 +62,10 @@ Foam::DEMCloud<CloudType>::DEMCloud
     massChecked_(false),
     placedBed_(false),
     convection_(nullptr),
-    hydrogenMoleFraction_(0)
+    hydrogenMoleFraction_(0),
+    hydrogenTransported_(false),
+    hydrogenDiffusivity_(0),
+    oxygenRemoved_(this->mesh().nCells(), Zero)
 {
     if (this->solution().active())
     {
@@ -240,31 +243,95 @@ void Foam::DEMCloud<CloudType>::readReduction()
         (
             dict,
             collision_->engine().materials().particleDict(),
-            wordList({"gas", "hydrogenMoleFraction"})
+            wordList({"gas", "hydrogenMoleFraction", "diffusivity"})
         )
     );
 
     const word gas(dict.get<word>("gas"));
-    if (gas != "uniform")
+    if (gas == "uniform")
+    {
+        hydrogenMoleFraction_ = dict.get<scalar>("hydrogenMoleFraction");
+        if (!(hydrogenMoleFraction_ >= 0 && hydrogenMoleFraction_ <= 1))
+        {
+            FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
+                << "Keyword hydrogenMoleFraction in " << dict.name()
+                << " is the hydrogen mole fraction of the gas and must lie"
+                << " in [0, 1], not " << hydrogenMoleFraction_
+                << exit(FatalIOError);
+        }
+    }
+    else if (gas == "transported")
+    {
+        hydrogenTransported_ = true;
+        if (dict.found("hydrogenMoleFraction"))
+        {
+            FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
+                << "Keyword hydrogenMoleFraction in " << dict.name()
+                << " is not read with gas transported: the hydrogen"
+                << " fraction comes from the gas's fields Y_H2 and Y_H2O"
+                << exit(FatalIOError);
+        }
+        hydrogenDiffusivity_ = dict.get<scalar>("diffusivity");
+        if (!(hydrogenDiffusivity_ > 0 && hydrogenDiffusivity_ < 1))
+        {
+            FatalIOErrorInKeyword(dict, "diffusivity")
+                << "Keyword diffusivity in " << dict.name() << " is that of"
+                << " H2 and H2O in the gas [m^2/s] and must lie in (0, 1),"
+                << " not " << hydrogenDiffusivity_ << exit(FatalIOError);
+        }
+    }
+    else
     {
         FatalIOErrorInKeyword(dict, "gas")
             << "Unknown gas " << gas << " in " << dict.name() << nl
-            << "Valid gas compositions are (uniform)"
+            << "Valid gas compositions are (uniform transported)"
             << exit(FatalIOError);
-    }
-    hydrogenMoleFraction_ = dict.get<scalar>("hydrogenMoleFraction");
-    if (!(hydrogenMoleFraction_ >= 0 && hydrogenMoleFraction_ <= 1))
-    {
-        FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
-            << "Keyword hydrogenMoleFraction in " << dict.name() << " is the"
-            << " hydrogen mole fraction of the gas and must lie in [0, 1],"
-            << " not " << hydrogenMoleFraction_ << exit(FatalIOError);
     }
 
     Info<< "    hydrogen reduction: " << reduction_->law().type()
         << ", iron content W0 " << reduction_->path().ironContent()
-        << ", gas uniform with H2 mole fraction " << hydrogenMoleFraction_
-        << ", chemistry acceleration " << reduction_->acceleration() << endl;
+        << ", gas " << gas;
+    if (hydrogenTransported_)
+    {
+        Info<< " (Y_H2, Y_H2O, diffusivity " << hydrogenDiffusivity_
+            << " m^2/s)";
+    }
+    else
+    {
+        Info<< " with H2 mole fraction " << hydrogenMoleFraction_;
+    }
+    Info<< ", chemistry acceleration " << reduction_->acceleration() << endl;
+}
+
+
+template<class CloudType>
+Foam::tmp<Foam::volScalarField::Internal>
+Foam::DEMCloud<CloudType>::oxygenSource() const
+{
+    const fvMesh& mesh = this->mesh();
+    tmp<volScalarField::Internal> tS
+    (
+        new volScalarField::Internal
+        (
+            IOobject
+            (
+                this->name() + ":oxygenSource",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimMoles/dimVolume/dimTime, Zero)
+        )
+    );
+    if (reduction_.valid())
+    {
+        tS.ref().field() =
+            oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue());
+    }
+    return tS;
 }
 
 
@@ -275,6 +342,32 @@ void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
     const scalar dt = this->db().time().deltaTValue();
     demParticles& P = collision_->engine().particles();
 
+    // The hydrogen mole fraction of each cell's gas: H2 and H2O in a
+    // carrier of the gas's molar mass (thermophysicalProperties)
+    scalarField yH2;
+    if (hydrogenTransported_)
+    {
+        const fvMesh& mesh = this->mesh();
+        const scalarField& Y1 =
+            mesh.lookupObject<volScalarField>("Y_H2").primitiveField();
+        const scalarField& Y2 =
+            mesh.lookupObject<volScalarField>("Y_H2O").primitiveField();
+        const scalarField W
+        (
+            1e-3*this->thermo().thermo().W()().primitiveField()
+        );
+        const scalar M1 = ironOxidePath::MH2, M2 = ironOxidePath::MH2O;
+        const scalarField n1(max(Y1, scalar(0))/M1);
+        yH2 =
+            n1
+           /max
+            (
+                n1 + max(Y2, scalar(0))/M2 + max(1 - Y1 - Y2, scalar(0))/W,
+                VSMALL
+            );
+    }
+    oxygenRemoved_ = 0;
+
     scalar oxygen = 0, heat = 0, sumX = 0;
     scalar minX = GREAT, maxX = -GREAT;
     for (parcelType& p : cloud)
@@ -282,8 +375,11 @@ void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
         const scalar m = p.mass();
         const parcelReduction::step s = reduction_->advance
         (
-            p.reductionDegree(), p.T(), m, hydrogenMoleFraction_, dt
+            p.reductionDegree(), p.T(), m,
+            hydrogenTransported_ ? yH2[p.cell()] : hydrogenMoleFraction_,
+            dt
         );
+        oxygenRemoved_[p.cell()] += p.nParticle()*s.oxygen;
         p.reductionDegree() = s.X;
         p.rho() *= s.mass/m;
         p.T() -= s.heat/(s.mass*p.Cp());
