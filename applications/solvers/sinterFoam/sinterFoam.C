@@ -32,6 +32,11 @@ Description
 
     Particles: one thermal colliding cloud, constant/cloudProperties.
 
+    Hydrogen reduction (the cloud's reduction dictionary, gas transported):
+    the gas carries H2 and H2O (Y_H2, Y_H2O, YEqn.H) with the parcels'
+    sources, and its continuity the oxygen's mass; that mass enters at the
+    gas's own enthalpy.
+
     Data flow of a time step:
         gas -> cloud (move, collide, drag, heat) -> voidage and sources
             -> gas (momentum, energy, pressure)
