@@ -392,6 +392,12 @@ void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
         maxX = max(maxX, s.X);
     }
 
+    // A particle's ghosts on other processors carry its mass from the last
+    // rebuild of the lists: a rebuild in the step sends the new masses. It
+    // is asked for serially as well, so that a run takes the same steps on
+    // any number of processors
+    collision_->engine().invalidateLists();
+
     const label n = returnReduce(this->size(), sumOp<label>());
     Foam::reduce(oxygen, sumOp<scalar>());
     Foam::reduce(heat, sumOp<scalar>());
