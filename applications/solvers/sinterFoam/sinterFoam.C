@@ -93,9 +93,10 @@ int main(int argc, char *argv[])
         // Gas -> cloud: parcels move, collide, take drag and heat (and
         // hydrogen)
         cloud.evolve();
+        oxygenSource = cloud.oxygenSource();
         massSource =
             dimensionedScalar("M_O", dimMass/dimMoles, ironOxidePath::MO)
-           *cloud.oxygenSource();
+           *oxygenSource;
 
         // Cloud -> gas: voidage from the new parcel positions
         #include "updateVoidage.H"

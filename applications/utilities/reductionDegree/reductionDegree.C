@@ -45,37 +45,11 @@ Usage
 #include "numberLiterals.H"
 #include "knownKeywords.H"
 #include "keywordSource.H"
+#include "keywordRange.H"
 #include "reductionLaw.H"
 #include "ironOxidePath.H"
 
 using namespace Foam;
-
-namespace
-{
-
-//- The value of key in dict, which must lie in [lo, hi]
-scalar bounded
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar lo,
-    const scalar hi,
-    const char* what
-)
-{
-    const scalar v = dict.get<scalar>(key);
-    if (!(v >= lo && v <= hi))
-    {
-        FatalIOErrorInKeyword(dict, key)
-            << "Keyword " << key << " in " << dict.name() << " must lie in ["
-            << lo << ", " << hi << "]: " << what << ", not " << v
-            << exit(FatalIOError);
-    }
-    return v;
-}
-
-} // End anonymous namespace
-
 
 int main(int argc, char *argv[])
 {
@@ -123,7 +97,7 @@ int main(int argc, char *argv[])
         reductionLaw::New(dict.subDict("kinetics"))
     );
     const scalar interval =
-        bounded(dict, "writeInterval", SMALL, GREAT, "a time [s] > 0");
+        keywordRange::get(dict, "writeInterval", 0, GREAT, "a time [s]", true);
 
     const dictionary& powders = dict.subDict("powders");
     const dictionary& runs = dict.subDict("runs");
@@ -171,26 +145,26 @@ int main(int argc, char *argv[])
         knownKeywords::check(powderDict, wordList({"ironContent"}));
         const ironOxidePath path(powderDict);
 
-        const scalar T = bounded
+        const scalar T = keywordRange::get
         (
             run, "T", 200, 3000, "the bed temperature in kelvin"
         );
-        const scalar yH2 = bounded
+        const scalar yH2 = keywordRange::get
         (
             run, "H2", 0, 1, "the hydrogen mole fraction"
         );
-        const scalar duration = bounded
+        const scalar duration = keywordRange::get
         (
-            run, "duration", SMALL, GREAT, "a time [s] > 0"
+            run, "duration", 0, GREAT, "a time [s]", true
         );
-        const scalar X0 =
-            run.found("X0")
-          ? bounded(run, "X0", 0, 1, "the initial reduction degree")
-          : 0;
+        const scalar X0 = keywordRange::getOrDefault
+        (
+            run, "X0", 0, 0, 1, "the initial reduction degree"
+        );
         const bool measured = run.found("measured");
         const scalar Xm =
             measured
-          ? bounded(run, "measured", 0, 1, "a reduction degree")
+          ? keywordRange::get(run, "measured", 0, 1, "a reduction degree")
           : -1;
         const string source(run.lookupOrDefault<string>("source", ""));
 

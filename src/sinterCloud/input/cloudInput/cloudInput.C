@@ -5,6 +5,7 @@
 #include "IOdictionary.H"
 #include "coarseGrainFactor.H"
 #include "knownKeywords.H"
+#include "keywordRange.H"
 #include "keywordSource.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -65,19 +66,26 @@ void checkConstantProperties(const dictionary& constProps)
             "reductionDegree0"
         }
     );
-    scalar X0 = 0;
-    if
+    keywordRange::getOrDefault
     (
-        constProps.readIfPresent("reductionDegree0", X0)
-     && !(X0 >= 0 && X0 <= 1)
-    )
-    {
-        FatalIOErrorInKeyword(constProps, "reductionDegree0")
-            << "Keyword reductionDegree0 in " << constProps.name()
-            << " is the reduction degree of injected parcels and must lie"
-            << " in [0, 1] (0: the oxide, 1: iron), not " << X0
-            << exit(FatalIOError);
-    }
+        constProps, "reductionDegree0", 0, 0, 1,
+        "the reduction degree of injected parcels (0: the oxide, 1: iron)"
+    );
+}
+
+
+//- constant/<cloudName>Properties, read, not registered
+IOobject propertiesIO(const fvMesh& mesh, const word& cloudName)
+{
+    return IOobject
+    (
+        cloudName + "Properties",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
 }
 
 } // End anonymous namespace
@@ -136,18 +144,7 @@ void Foam::cloudInput::checkSizeDistribution
 
 void Foam::cloudInput::check(const fvMesh& mesh, const word& cloudName)
 {
-    const IOdictionary props
-    (
-        IOobject
-        (
-            cloudName + "Properties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const IOdictionary props(propertiesIO(mesh, cloudName));
 
     const dictionary& constProps = props.subDict("constantProperties");
     checkConstantProperties(constProps);
@@ -177,18 +174,7 @@ bool Foam::cloudInput::transportsHydrogen
     const word& cloudName
 )
 {
-    const IOdictionary props
-    (
-        IOobject
-        (
-            cloudName + "Properties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const IOdictionary props(propertiesIO(mesh, cloudName));
     const dictionary* reduction = props.findDict("reduction");
     return
         reduction

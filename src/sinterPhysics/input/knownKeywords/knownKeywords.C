@@ -82,3 +82,14 @@ void Foam::knownKeywords::check
             << exit(FatalIOError);
     }
 }
+
+
+const Foam::dictionary& Foam::knownKeywords::checked
+(
+    const dictionary& dict,
+    const wordList& valid
+)
+{
+    check(dict, valid);
+    return dict;
+}

@@ -4,6 +4,7 @@
 #include "HancockSharp.H"
 #include "keywordSource.H"
 #include "knownKeywords.H"
+#include "keywordRange.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <cmath>
@@ -28,41 +29,11 @@ namespace
 
 using namespace Foam;
 
-//- The keywords of the law's dictionary besides law
-const Foam::wordList lawKeywords({"k0", "activationEnergy", "n", "hydrogenOrder"});
-
-
-//- dict, its keywords checked first (a misspelt one is named, not reported
-//  as a missing one)
-const dictionary& checked(const dictionary& dict)
-{
-    wordList valid(lawKeywords);
-    valid.append(word("law"));
-    knownKeywords::check(dict, valid);
-    return dict;
-}
-
-
-//- The value of key, which must lie in [lo, hi] (finite)
-scalar inRange
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar lo,
-    const scalar hi,
-    const char* units
-)
-{
-    const scalar v = dict.get<scalar>(key);
-    if (!(v >= lo && v <= hi))
-    {
-        FatalIOErrorInKeyword(dict, key)
-            << "Keyword " << key << " in " << dict.name() << " must lie in ["
-            << lo << ", " << hi << "] " << units << ", not " << v
-            << exit(FatalIOError);
-    }
-    return v;
-}
+//- The keywords of the law's dictionary
+const Foam::wordList lawKeywords
+({
+    "law", "k0", "activationEnergy", "n", "hydrogenOrder"
+});
 
 } // End anonymous namespace
 
@@ -71,19 +42,26 @@ scalar inRange
 
 Foam::reductionLaws::HancockSharp::HancockSharp(const dictionary& dict)
 :
-    k0_(checked(dict).get<scalar>("k0")),
-    Ea_(inRange(dict, "activationEnergy", 0, 1e6, "J/mol")),
-    m_(inRange(dict, "hydrogenOrder", 0, 5, "(the order of k in the hydrogen mole fraction)")),
+    k0_
+    (
+        keywordRange::get
+        (
+            knownKeywords::checked(dict, lawKeywords), "k0", 0, GREAT,
+            "the pre-exponential factor [1/s] of eq 3.4", true
+        )
+    ),
+    Ea_(keywordRange::get(dict, "activationEnergy", 0, 1e6, "E_a [J/mol]")),
+    m_
+    (
+        keywordRange::get
+        (
+            dict, "hydrogenOrder", 0, 5,
+            "the order of k in the hydrogen mole fraction"
+        )
+    ),
     nT_(),
     n_()
 {
-    if (!(k0_ > 0 && k0_ < VGREAT))
-    {
-        FatalIOErrorInKeyword(dict, "k0")
-            << "Keyword k0 in " << dict.name() << " is the pre-exponential"
-            << " factor [1/s] of eq 3.4 and must be > 0, not " << k0_
-            << exit(FatalIOError);
-    }
     if (Ea_ > 0 && Ea_ < 1e3)
     {
         FatalIOErrorInKeyword(dict, "activationEnergy")
@@ -142,12 +120,6 @@ Foam::reductionLaws::HancockSharp::HancockSharp(const dictionary& dict)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::wordList Foam::reductionLaws::HancockSharp::keywords() const
-{
-    return lawKeywords;
-}
-
 
 Foam::scalar Foam::reductionLaws::HancockSharp::k(const scalar T) const
 {

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "parcelReduction.H"
-#include "keywordSource.H"
+#include "keywordRange.H"
 #include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * Local functions * * * * * * * * * * * * * //
@@ -10,17 +10,12 @@
 namespace
 {
 
-//- dict, its keywords checked first
-const Foam::dictionary& checked
-(
-    const Foam::dictionary& dict,
-    const Foam::wordList& readerKeywords
-)
+//- The keywords of the reduction dictionary and of its reader
+Foam::wordList validKeywords(const Foam::wordList& readerKeywords)
 {
     Foam::wordList valid({"kinetics", "acceleration"});
     valid.append(readerKeywords);
-    Foam::knownKeywords::check(dict, valid);
-    return dict;
+    return valid;
 }
 
 } // End anonymous namespace
@@ -35,19 +30,24 @@ Foam::parcelReduction::parcelReduction
     const wordList& readerKeywords
 )
 :
-    law_(reductionLaw::New(checked(dict, readerKeywords).subDict("kinetics"))),
+    law_
+    (
+        reductionLaw::New
+        (
+            knownKeywords::checked(dict, validKeywords(readerKeywords))
+           .subDict("kinetics")
+        )
+    ),
     path_(material),
-    acceleration_(dict.lookupOrDefault<scalar>("acceleration", 1))
-{
-    if (!(acceleration_ >= 1 && acceleration_ <= 1e6))
-    {
-        FatalIOErrorInKeyword(dict, "acceleration")
-            << "Keyword acceleration in " << dict.name() << " is the"
-            << " chemistry's time-acceleration factor and must lie in"
-            << " [1, 1e6] (1: real time), not " << acceleration_
-            << exit(FatalIOError);
-    }
-}
+    acceleration_
+    (
+        keywordRange::getOrDefault
+        (
+            dict, "acceleration", 1, 1, 1e6,
+            "the chemistry's time-acceleration factor (1: real time)"
+        )
+    )
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -3,7 +3,6 @@
 
 #include "reductionLaw.H"
 #include "error.H"
-#include "knownKeywords.H"
 
 namespace Foam
 {
@@ -32,11 +31,5 @@ Foam::autoPtr<Foam::reductionLaw> Foam::reductionLaw::New
         ) << exit(FatalIOError);
     }
 
-    autoPtr<reductionLaw> law(cstrIter()(dict));
-
-    wordList valid(law->keywords());
-    valid.append(word("law"));
-    knownKeywords::check(dict, valid);
-
-    return law;
+    return autoPtr<reductionLaw>(cstrIter()(dict));
 }

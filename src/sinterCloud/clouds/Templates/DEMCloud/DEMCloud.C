@@ -250,15 +250,11 @@ void Foam::DEMCloud<CloudType>::readReduction()
     const word gas(dict.get<word>("gas"));
     if (gas == "uniform")
     {
-        hydrogenMoleFraction_ = dict.get<scalar>("hydrogenMoleFraction");
-        if (!(hydrogenMoleFraction_ >= 0 && hydrogenMoleFraction_ <= 1))
-        {
-            FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
-                << "Keyword hydrogenMoleFraction in " << dict.name()
-                << " is the hydrogen mole fraction of the gas and must lie"
-                << " in [0, 1], not " << hydrogenMoleFraction_
-                << exit(FatalIOError);
-        }
+        hydrogenMoleFraction_ = keywordRange::get
+        (
+            dict, "hydrogenMoleFraction", 0, 1,
+            "the hydrogen mole fraction of the gas"
+        );
     }
     else if (gas == "transported")
     {
@@ -271,14 +267,11 @@ void Foam::DEMCloud<CloudType>::readReduction()
                 << " fraction comes from the gas's fields Y_H2 and Y_H2O"
                 << exit(FatalIOError);
         }
-        hydrogenDiffusivity_ = dict.get<scalar>("diffusivity");
-        if (!(hydrogenDiffusivity_ > 0 && hydrogenDiffusivity_ < 1))
-        {
-            FatalIOErrorInKeyword(dict, "diffusivity")
-                << "Keyword diffusivity in " << dict.name() << " is that of"
-                << " H2 and H2O in the gas [m^2/s] and must lie in (0, 1),"
-                << " not " << hydrogenDiffusivity_ << exit(FatalIOError);
-        }
+        hydrogenDiffusivity_ = keywordRange::get
+        (
+            dict, "diffusivity", 0, 1,
+            "the diffusivity of H2 and H2O in the gas [m^2/s]", true, true
+        );
     }
     else
     {

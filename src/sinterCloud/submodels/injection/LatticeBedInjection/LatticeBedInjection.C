@@ -12,31 +12,9 @@
 #include "Random.H"
 #include "DynamicList.H"
 #include "keywordSource.H"
+#include "keywordRange.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType>
-Foam::scalar Foam::LatticeBedInjection<CloudType>::bounded
-(
-    const word& key,
-    const scalar deflt,
-    const scalar lo,
-    const scalar hi,
-    const bool hiOpen
-) const
-{
-    const dictionary& dict = this->coeffDict();
-    const scalar value = dict.lookupOrDefault<scalar>(key, deflt);
-    if (!(value >= lo && (hiOpen ? value < hi : value <= hi)))
-    {
-        FatalIOErrorInKeyword(dict, key)
-            << "Keyword " << key << " in " << dict.name() << " must lie in ["
-            << lo << ", " << hi << (hiOpen ? ")" : "]") << ", not " << value
-            << exit(FatalIOError);
-    }
-    return value;
-}
-
 
 template<class CloudType>
 void Foam::LatticeBedInjection<CloudType>::place()
@@ -260,9 +238,27 @@ Foam::LatticeBedInjection<CloudType>::LatticeBedInjection
 :
     InjectionModel<CloudType>(dict, owner, modelName, typeName),
     U0_(this->coeffDict().lookupOrDefault("U0", vector::zero)),
-    gap_(bounded("gap", 0.02, 0, 1, false)),
-    jitter_(bounded("jitter", 0.9, 0, 1, true)),
-    seed_(label(bounded("seed", 1, 0, labelMax, false))),
+    gap_
+    (
+        keywordRange::getOrDefault(this->coeffDict(), "gap", 0.02, 0, 1, "")
+    ),
+    jitter_
+    (
+        keywordRange::getOrDefault
+        (
+            this->coeffDict(), "jitter", 0.9, 0, 1, "", false, true
+        )
+    ),
+    seed_
+    (
+        label
+        (
+            keywordRange::getOrDefault
+            (
+                this->coeffDict(), "seed", 1, 0, labelMax, ""
+            )
+        )
+    ),
     sizeDict_(this->coeffDict().subDict("sizeDistribution")),
     hasBox_(this->coeffDict().found("box")),
     box_(),
