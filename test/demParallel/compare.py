@@ -104,8 +104,14 @@ check(dT <= TEMPERATURE_TOL, f'largest temperature difference {dT:.3g} K '
 fields = ['U', 'd', 'angularVelocity', 'contactForce', 'contactTorque',
           'demContactPartner', 'demContactSpring', 'demContactDuration',
           'demContactFaceCentre']
-if os.path.exists(f'{work}/serial/0.02/lagrangian/cloud/demContactBridge'):
-    fields.append('demContactBridge')
+for optional in ('demContactBridge', 'demContactIronBridge', 'reductionDegree', 'rho'):
+    if os.path.exists(f'{work}/serial/0.02/lagrangian/cloud/{optional}'):
+        fields.append(optional)
+ironNecks = f'{work}/serial/0.02/lagrangian/cloud/demContactIronBridge'
+if os.path.exists(ironNecks):
+    x7 = [float(v) for v in re.findall(r'[-+]?\d+\.?\d*[eE][-+]?\d+', open(ironNecks).read())]
+    check(any(v > 0 for v in x7), f'iron necks grew: {sum(v > 0 for v in x7)} of the'
+          f' contact records, largest x^7 {max(x7, default=0):.3g} m^7')
 xo, xr = positions('serial', 0.02), positions('roundTrip', 0.02)
 index = {x: k for k, x in enumerate(xr)}
 check(len(xo) == len(xr) and all(x in index for x in xo),

@@ -22,6 +22,13 @@ Description
     the collision force at every v_n, and the Ergun drag (eq 2.9-2.10) at
     the powder's lowest and highest superficial gas velocity.
 
+    Reduced powders (thesis App. A): with reductionDegrees, the same balance
+    for particles reduced to each X: their mass m0 (1 - X (1 - W0)) (the
+    diameter kept, ironOxidePath with the powder's ironContent W0), their
+    surfaces part iron (surfaceIron) with the bridges
+    of ironOxideBridge (the iron's data: the material named by
+    reducedSurface). The collision keeps the oxide's elastic constants.
+
     -calibrate: the tensile strength sigma(T) is the one input the thesis
     does not tabulate. Given one powder's measured (or reference) T_t and
     T_d (sub-dictionary calibration), prints the sigma at both temperatures
@@ -44,7 +51,13 @@ Usage
         gas                 | viscosity [Pa s], density [kg/m^3], voidage [-] of the Ergun drag | yes
         powders             | per powder: d50 [m] > 0; superficialVelocities (u_min u_max) [m/s] of the drag band | yes
         calibration         | powder, Tt, Td [K], exponent n (only with -calibrate) | -calibrate
+        reductionDegrees    | list of X in [0, 1] of the reduced powders   | no (none)
+        reducedSurface      | material (in materials) of the iron on reduced surfaces | with reductionDegrees
+        surfaceIronExponent | s of the surface iron fraction phi^s (surfaceIron), in (0, 1] | no | 1
+        ironCalibration     | strength {powder X Td} and surface {powder X Td}: -calibrate also prints the iron's constant tensile strength and s that put both T_d there | no
     \endtable
+    and in each powder ironContent, W0(TFe) of Table 3.1 (with
+    reductionDegrees).
 */
 
 #include "argList.H"
@@ -56,6 +69,9 @@ Usage
 #include "mathematicalConstants.H"
 #include "sinterMaterial.H"
 #include "solidBridge.H"
+#include "ironOxideBridge.H"
+#include "surfaceIron.H"
+#include "keywordRange.H"
 #include "HertzCollision.H"
 #include "ErgunDrag.H"
 #include "numberLiterals.H"
@@ -86,6 +102,8 @@ struct powder
     scalar d;
     scalar m;
     scalarList uSuperficial;
+    //- W0(TFe), with reductionDegrees (else 0)
+    scalar ironContent;
 };
 
 
@@ -252,6 +270,7 @@ int main(int argc, char *argv[])
         const dictionary& pd = e.dict();
         powder p;
         p.name = e.keyword();
+        p.ironContent = 0;
         p.d = positive(pd, "d50");
         p.m = material.rho()*constant::mathematical::pi/6*pow3(p.d);
         p.uSuperficial = pd.get<scalarList>("superficialVelocities");
@@ -260,6 +279,10 @@ int main(int argc, char *argv[])
             FatalIOErrorInFunction(pd)
                 << "superficialVelocities " << p.uSuperficial
                 << " must hold velocities > 0 [m/s]" << exit(FatalIOError);
+        }
+        if (pd.found("ironContent"))
+        {
+            p.ironContent = ironOxidePath(pd).ironContent();
         }
         powders.append(p);
     }
@@ -413,6 +436,210 @@ int main(int argc, char *argv[])
                 }
             }
             os  << ' ' << FdMin/weight << ' ' << FdMax/weight << nl;
+        }
+    }
+
+
+    // Reduced powders
+    const scalarList Xs
+    (
+        mapDict.lookupOrDefault<scalarList>("reductionDegrees", scalarList())
+    );
+    if (Xs.size() || mapDict.found("ironCalibration"))
+    {
+        for (const scalar X : Xs)
+        {
+            keywordRange::check
+            (
+                mapDict, "reductionDegrees", X, 0, 1,
+                "every reduction degree is a fraction of the oxygen removed"
+            );
+        }
+        const word ironName(mapDict.get<word>("reducedSurface"));
+        if (!materials.isDict(ironName))
+        {
+            FatalIOErrorInFunction(mapDict)
+                << "reducedSurface " << ironName << " is not a sub-dictionary"
+                << " of materials" << nl << "Valid materials are: "
+                << materials.toc() << exit(FatalIOError);
+        }
+        const sinterMaterial iron(materials.subDict(ironName));
+        const ironOxideBridge reducedBridge(material, iron, mapDict);
+        const scalar sExponent = keywordRange::getOrDefault
+        (
+            mapDict, "surfaceIronExponent", 1, 0, 1,
+            "the exponent s of the surface iron fraction phi^s", true
+        );
+
+        for (const powder& p : powders)
+        {
+            if (p.ironContent <= 0)
+            {
+                FatalIOErrorInFunction(powdersDict)
+                    << "powder " << p.name << " in " << powdersDict.name()
+                    << " needs its ironContent, W0(TFe) of Table 3.1, for"
+                    << " the reduced powders (reductionDegrees)"
+                    << exit(FatalIOError);
+            }
+        }
+
+        // F_sb - F_n at T of a powder reduced to X colliding at v, with
+        // surface exponent s and the iron's tensile strength sigmaFe (< 0:
+        // the material's)
+        const auto balance = [&]
+        (
+            const powder& p,
+            const scalar X,
+            const scalar v,
+            const scalar s,
+            const scalar sigmaFe
+        )
+        {
+            const surfaceIron surface(ironOxidePath(p.ironContent), s);
+            const HertzCollision hertz
+            (
+                p.d/2, p.m*surface.path().massRatio(X), material.Y(),
+                material.nu()
+            );
+            const scalar Fn = hertz.maxNormalForce(v);
+            const scalar tc = hertz.contactTime(v);
+            const scalar rp = p.d/2;
+            return [&reducedBridge, surface, X, rp, Fn, tc, sigmaFe]
+            (
+                const scalar T
+            )
+            {
+                const scalar f = surface.fraction(X, T);
+                if (sigmaFe < 0)
+                {
+                    return reducedBridge.force(rp, T, tc, f, f) - Fn;
+                }
+                const scalar share = ironOxideBridge::ironShare(f, f);
+                return
+                    (1 - share)*reducedBridge.oxide().force(rp, T, tc)
+                  + share*sigmaFe
+                   *reducedBridge.iron().forcePerStrength(rp, T, tc)
+                  - Fn;
+            };
+        };
+
+        const auto findPowder = [&](const dictionary& dict) -> const powder&
+        {
+            const word which(dict.get<word>("powder"));
+            forAll(powders, i)
+            {
+                if (powders[i].name == which) return powders[i];
+            }
+            FatalIOErrorInFunction(dict)
+                << "powder " << which << " is not in powders"
+                << exit(FatalIOError);
+            return powders[0];
+        };
+
+        if (args.found("calibrate") && mapDict.found("ironCalibration"))
+        {
+            // Two conditions, two unknowns: strength {powder, X, Td} sets
+            // sigma_Fe for a given s (the force is linear in it); surface
+            // {powder, X, Td} then sets s (bisection: a smaller s, more
+            // iron on the surface, a lower T_d)
+            const dictionary& cal = mapDict.subDict("ironCalibration");
+            const dictionary& strength = cal.subDict("strength");
+            const dictionary& surfaceCal = cal.subDict("surface");
+            const powder& ps = findPowder(strength);
+            const powder& pf = findPowder(surfaceCal);
+            const scalar Xs0 = keywordRange::get
+            (
+                strength, "reductionDegree", 0, 1, "a reduction degree", true
+            );
+            const scalar Ts0 = keywordRange::get
+            (
+                strength, "Td", 200, 5000, "a temperature in kelvin"
+            );
+            const scalar Xf0 = keywordRange::get
+            (
+                surfaceCal, "reductionDegree", 0, 1, "a reduction degree",
+                true
+            );
+            const scalar Tf0 = keywordRange::get
+            (
+                surfaceCal, "Td", 200, 5000, "a temperature in kelvin"
+            );
+
+            const auto sigmaFor = [&](const scalar s)
+            {
+                // F(T) = A + sigma B at Ts0 equals zero
+                const scalar A = balance(ps, Xs0, vn.last(), s, 0)(Ts0);
+                const scalar B = balance(ps, Xs0, vn.last(), s, 1)(Ts0) - A;
+                return -A/B;
+            };
+            const auto TdFor = [&](const scalar s)
+            {
+                return crossing
+                (
+                    balance(pf, Xf0, vn.last(), s, sigmaFor(s)), Tmin, Tmax
+                );
+            };
+
+            scalar lo = 1e-3, hi = 1;
+            const scalar Tlo = TdFor(lo), Thi = TdFor(hi);
+            if (!(Tlo > 0 && Thi > 0 && Tlo <= Tf0 && Tf0 <= Thi))
+            {
+                FatalIOErrorInFunction(surfaceCal)
+                    << "No surface exponent s in [1e-3, 1] puts T_d of "
+                    << pf.name << " at X = " << Xf0 << " at " << Tf0
+                    << " K: it spans " << Tlo << " to " << Thi << " K"
+                    << exit(FatalIOError);
+            }
+            for (label iter = 0; iter < 60 && hi - lo > 1e-10; ++iter)
+            {
+                const scalar mid = 0.5*(lo + hi);
+                (TdFor(mid) < Tf0 ? lo : hi) = mid;
+            }
+            const scalar s = 0.5*(lo + hi);
+            const scalar sigmaFe = sigmaFor(s);
+
+            const label oldPrecision = Info().precision(10);
+            Info<< "Iron calibration: " << ps.name << " at X = " << Xs0
+                << " defluidizing at " << Ts0 << " K, " << pf.name
+                << " at X = " << Xf0 << " at " << Tf0 << " K:" << nl
+                << "    surfaceIronExponent " << s << ";" << nl
+                << "    tensileStrength constant " << sigmaFe << ";" << nl
+                << endl;
+            Info().precision(oldPrecision);
+        }
+
+        OFstream os(outDir/"reduced.dat");
+        os.precision(8);
+        os  << "# Reduced powders: material " << material.name()
+            << ", reduced surface " << iron.name() << ", C = "
+            << bridge.C() << ", surface iron exponent " << sExponent
+            << "; temperatures in kelvin (-1: none in range)" << nl
+            << "# powder X T_t T_d surfaceIron(T_d) massRatio" << nl;
+
+        Info<< nl << "Reduced powders (surface iron " << iron.name()
+            << ", exponent " << sExponent << "):" << nl;
+        for (const powder& p : powders)
+        {
+            const surfaceIron surface(ironOxidePath(p.ironContent), sExponent);
+            for (const scalar X : Xs)
+            {
+                const scalar Tt = crossing
+                (
+                    balance(p, X, vn.first(), sExponent, -1), Tmin, Tmax
+                );
+                const scalar Td = crossing
+                (
+                    balance(p, X, vn.last(), sExponent, -1), Tmin, Tmax
+                );
+                const scalar f = Td > 0 ? surface.fraction(X, Td) : -1;
+                Info<< "reduced " << setw(6) << p.name << "  X "
+                    << setw(5) << X << "  f(T_d) " << setw(8) << f;
+                printTemperature(Tt);
+                printTemperature(Td);
+                Info<< nl;
+                os  << p.name << ' ' << X << ' ' << Tt << ' ' << Td << ' '
+                    << f << ' ' << surface.path().massRatio(X) << nl;
+            }
         }
     }
 

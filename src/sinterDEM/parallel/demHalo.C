@@ -91,6 +91,7 @@ void Foam::demHalo::select
             os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
                 << P.radius[i] << P.invMass[i] << P.invInertia[i]
                 << P.temperature[i] << P.gasConductivity[i]
+                << P.surfaceIron[i]
                 << identityProc(P.identity[i]) << identityIndex(P.identity[i]);
         }
     }
@@ -110,7 +111,8 @@ void Foam::demHalo::select
             label proc, id;
             is  >> P.position[i] >> P.velocity[i] >> P.angularVelocity[i]
                 >> P.radius[i] >> P.invMass[i] >> P.invInertia[i]
-                >> P.temperature[i] >> P.gasConductivity[i] >> proc >> id;
+                >> P.temperature[i] >> P.gasConductivity[i]
+                >> P.surfaceIron[i] >> proc >> id;
             P.identity[i] = makeIdentity(proc, id);
         }
     }

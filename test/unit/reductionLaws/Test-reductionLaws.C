@@ -23,6 +23,10 @@ Description
       11 %), Table 3.1's powders' hematite fractions, phases summing to 1,
       m/m0 = W0 at X = 1, the total enthalpy the same on both paths
       (Hess), metallic iron only after the oxide stages;
+    - the iron on the surface: the iron volume fraction of magnetite half
+      reduced (hand, phase densities), the surface fraction phi^s
+      (surfaceIron) for s = 1 and 0.21, 0 and 1 at X = 0 and 1, none in
+      the wustite stage, never falling as X rises;
     - a parcel's step (parcelReduction): the mass it loses is the oxygen
       removed, its heat that of the path, and a step dt at acceleration A
       is the step A dt at A = 1.
@@ -32,6 +36,7 @@ Description
 #include "HancockSharp.H"
 #include "ironOxidePath.H"
 #include "parcelReduction.H"
+#include "surfaceIron.H"
 #include "unitCheck.H"
 
 using namespace Foam;
@@ -201,6 +206,32 @@ int main(int argc, char *argv[])
         check("the hematite stage is exothermic (-6.03 kJ/mol O)",
             tiny.enthalpy(0, tiny.hematiteEnd(), T500)
            /(tiny.hematiteEnd()*tiny.oxygen()), -6.026e3, 1e-3);
+
+        // The iron on the surface: magnetite half reduced at 500 degC
+        // holds Fe and Fe3O4 with equal iron, by volume (hand, densities
+        // 7874 and 5180 kg/m^3) 0.322505; with s = 0.21 the surface
+        // shows 0.322505^0.21 = 0.788484
+        check("magnetite at X 0.5, 500 degC: iron volume fraction (hand 0.322505)",
+            mag.ironVolumeFraction(0.5, T500), 0.322505, 1e-5);
+        check("... surface iron, s = 1 (Delesse): the volume fraction",
+            surfaceIron(mag, 1).fraction(0.5, T500),
+            mag.ironVolumeFraction(0.5, T500), 0);
+        check("... surface iron, s = 0.21 (hand 0.788484)",
+            surfaceIron(mag, 0.21).fraction(0.5, T500), 0.788484, 1e-5);
+        const surfaceIron tinySurface(tiny, 0.21);
+        check("surface iron at X = 0", tinySurface.fraction(0, T500), 0, 0);
+        check("surface iron at X = 1", tinySurface.fraction(1, T500), 1, 1e-12);
+        check("no surface iron in the wustite stage (650 degC)",
+            tinySurface.fraction(0.2, 923.15), 0, 0);
+        label rising = 0;
+        for (label i = 1; i <= 100; ++i)
+        {
+            rising +=
+                tinySurface.fraction(0.01*i, T500)
+             >= tinySurface.fraction(0.01*(i - 1), T500);
+        }
+        check("surface iron never falls as X rises (100 steps, 500 degC)",
+            rising, 100, 0);
     }
 
     // A parcel's step

@@ -30,6 +30,17 @@ Description
         steps only, F = eq 5.10 with t = 0.005 s (0.1 %);
       - coarse graining: Pi = F/(r^2 rho v0^2) is the same for K = 4 at
         t = 4 ms and K = 6 at t = 6 ms, the same t* = t v0/r (1e-9).
+
+    Reduced surfaces (materials with reducedSurface iron: gamma 2 N/m,
+    delta 2.8665e-10 m, D = 1.88e-5 exp(-160.7 kJ/mol/(R T)) m^2/s, sigma
+    71412468.44 Pa), at 773.15 K for 0.01 s, each within 0.1 %:
+      - surface iron fractions 0 and 0: the oxide's eq 5.10 (the iron's
+        neck does not grow: its slot stays 0);
+      - 1 and 1: eq 5.10 with the iron's data;
+      - 0.5 and 0.8: (1 - 0.4) F_oxide + 0.4 F_iron (share f_i f_j);
+      - a wall contact, particle at 0.6: (1 - 0.36) F_oxide + 0.36 F_iron;
+      - iron appearing half-way (0 for 5000 steps, then 1): the iron neck
+        of the last 5000 steps only, F_iron(0.005 s).
 */
 
 #include "argList.H"
@@ -168,6 +179,102 @@ scalar wallRun
 }
 
 
+//- eq 5.10 with the iron's data at constant T, independent of the library
+scalar ironReference(const scalar T, const scalar t)
+{
+    const scalar R = 8.314462618;
+    const scalar kB = 1.380649e-23;
+    const scalar Ds = 1.88e-5*std::exp(-1.607e5/(R*T));
+    const scalar c = std::pow(1e6/359e9, 0.4);
+    const scalar x7 =
+        56*2*std::pow(2.8665e-10, 4)*Ds*std::pow(rPrimary, 3)*c*t/(kB*T);
+    return constant::mathematical::pi*71412468.44*std::pow(x7, 2.0/7.0);
+}
+
+
+//- Two spheres with surface iron fractions f0, f1 (f1 < 0: f0 on a
+//  wall) held in contact at T for n steps, the fractions switched to
+//  (g0, g1) after nSwitch steps: the bridge force, with cohesion minus
+//  without, and the iron neck
+result reducedRun
+(
+    const scalar T,
+    const label n,
+    const scalar f0,
+    const scalar f1,
+    const label nSwitch = -1,
+    const scalar g0 = 0,
+    const scalar g1 = 0
+)
+{
+    const bool wall = f1 < 0;
+    const scalar L = 10*rPrimary;
+    const pointField points
+    ({
+        point(0, 0, 0), point(0, L, 0), point(L, L, 0), point(L, 0, 0)
+    });
+    const faceList faces({face(labelList({0, 1, 2, 3}))});
+
+    vector F[2];
+    scalar x7Fe = 0;
+    for (const label k : {0, 1})
+    {
+        demEngine e
+        (
+            sinteringEngineDict(k ? "none" : "solidBridge", "smooth", 0),
+            unitTest::reducedHematiteMaterials(),
+            1
+        );
+        demParticles& P = e.resetParticles();
+        if (wall)
+        {
+            e.setWalls(demWalls(points, faces));
+            e.setWallTemperature(scalarField(1, T));
+            P.append
+            (
+                point(0.5*L, 0.5*L, rPrimary*(1 - 1e-3)), Zero, Zero,
+                rPrimary, 5240, 0
+            );
+        }
+        else
+        {
+            hold(e, 1, T);
+        }
+        forAll(P.position, i)
+        {
+            P.invMass[i] = 1e-30;
+            P.invInertia[i] = 1e-30;
+            P.temperature[i] = T;
+            P.surfaceIron[i] = i ? f1 : f0;
+        }
+        for (label s = 0; s < n; ++s)
+        {
+            if (s == nSwitch)
+            {
+                P.surfaceIron[0] = g0;
+                if (!wall) P.surfaceIron[1] = g1;
+            }
+            e.step(dt);
+        }
+        F[k] = P.force[0];
+        if (!k)
+        {
+            const contactList& C = wall ? e.wallContacts() : e.pairs();
+            for (const contactSlots::slot& sl : e.slots().slots())
+            {
+                if (sl.name == "ironBridge")
+                {
+                    x7Fe = C.stateOf(0)[sl.offset];
+                }
+            }
+        }
+    }
+    // Attractive: towards particle 1 (+x) or the wall (-z)
+    const scalar Fb = wall ? F[1].z() - F[0].z() : F[0].x() - F[1].x();
+    return {Fb, x7Fe, 0};
+}
+
+
 //- eq 5.10 at constant T, independent of the library
 scalar reference(const scalar K, const scalar T, const scalar t, const scalar C)
 {
@@ -298,6 +405,35 @@ int main(int argc, char *argv[])
     const scalar Pi4 = run(4, 1273.15, 4000).force/(sqr(4*rPrimary)*5240);
     const scalar Pi6 = run(6, 1273.15, 6000).force/(sqr(6*rPrimary)*5240);
     check("Pi(K 6, t* equal)/Pi(K 4)", Pi6/Pi4, 1, 1e-9);
+
+    // Reduced surfaces: the share f_i f_j of iron-iron micro-contacts
+    {
+        const scalar T = 773.15, t = 0.01;
+        const label n = 10000;
+        const scalar Fox = reference(1, T, t, 1), FFe = ironReference(T, t);
+        Info<< "reduced surfaces at " << T << " K after " << t << " s: F_oxide "
+            << Fox << " N, F_iron " << FFe << " N" << nl;
+        const result none = reducedRun(T, n, 0, 0);
+        check("F_sb, surface iron 0 and 0 [N]", none.force, Fox, 1e-3);
+        check("iron neck x^7, surface iron 0 and 0", none.x7, 0, 0);
+        check("F_sb, surface iron 1 and 1 [N]", reducedRun(T, n, 1, 1).force, FFe, 1e-3);
+        check
+        (
+            "F_sb, surface iron 0.5 and 0.8 [N]",
+            reducedRun(T, n, 0.5, 0.8).force, 0.6*Fox + 0.4*FFe, 1e-3
+        );
+        check
+        (
+            "F_sb, surface iron 0.6 on a wall [N]",
+            reducedRun(T, n, 0.6, -1).force, 0.64*Fox + 0.36*FFe, 1e-3
+        );
+        check
+        (
+            "F_sb, iron from step 5000 [N]",
+            reducedRun(T, n, 0, 0, 5000, 1, 1).force,
+            ironReference(T, 0.005), 1e-3
+        );
+    }
 
     if (unitTest::nFailed())
     {

@@ -115,6 +115,11 @@ void Foam::cohesionModels::solidBridge::Factors::evaluate(const scalar T)
     }
     rate_ = law_.neckGrowthRate(1, T);
     strength_ = scale_*law_.forceFromNeck(1, T);
+    if (ironLaw_)
+    {
+        ironRate_ = ironLaw_->neckGrowthRate(1, T);
+        ironStrength_ = scale_*ironLaw_->forceFromNeck(1, T);
+    }
     T_ = T;
 }
 
@@ -151,8 +156,21 @@ Foam::cohesionModels::solidBridge::solidBridge
             neckIntegrationModel::exact
         )
     ),
-    bridgeSlot_(slots.addScalar("bridge", typeName, false))
+    bridgeSlot_(slots.addScalar("bridge", typeName, false)),
+    ironBridgeSlot_(-1)
 {
+    const dictionary* ironDict = law.materials().reducedSurfaceDict();
+    if (ironDict)
+    {
+        ironMaterial_.reset(new sinterMaterial(*ironDict));
+        ironLaw_.reset(new Foam::solidBridge(ironMaterial_(), coeffs_));
+        ironBridgeSlot_ = slots.addScalar("ironBridge", typeName, false);
+        Info<< "    solid bridges of reduced surfaces: the iron-iron"
+            << " micro-contacts grow with the data of material "
+            << ironMaterial_().name() << " (reducedSurface), the share"
+            << " f_i f_j of the surface iron fractions" << endl;
+    }
+
     forAll(cWall_, m)
     {
         cWall_[m] =

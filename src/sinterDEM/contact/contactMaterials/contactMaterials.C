@@ -128,6 +128,7 @@ Foam::contactMaterials::contactMaterials(const dictionary& dict)
     }
     wordList valid(names);
     valid.append(word("particle"));
+    valid.append(word("reducedSurface"));
     valid.append(word("walls"));
     valid.append(word("heatCapacityScale"));
     knownKeywords::check(dict_, valid);
@@ -150,6 +151,9 @@ Foam::contactMaterials::contactMaterials(const dictionary& dict)
             << " states are physical" << endl;
     }
 
+    // The material is checked here, where the file is read
+    reducedSurfaceDict();
+
     const dictionary& walls = dict_.subDict("walls");
     for (const entry& e : walls)
     {
@@ -163,6 +167,17 @@ Foam::contactMaterials::contactMaterials(const dictionary& dict)
             wallNames_.append(name);
         }
     }
+}
+
+
+const Foam::dictionary* Foam::contactMaterials::reducedSurfaceDict() const
+{
+    if (!dict_.found("reducedSurface"))
+    {
+        return nullptr;
+    }
+    const word name(dict_.get<word>("reducedSurface"));
+    return &material(name, dict_, "reducedSurface");
 }
 
 

@@ -42,7 +42,7 @@ const Foam::wordList& Foam::sinterMaterial::keywords()
         "density", "specificHeat", "youngsModulus", "demYoungsModulus",
         "poissonsRatio", "thermalConductivity", "surfaceTension",
         "latticeConstant", "surfaceDiffusion", "tensileStrength",
-        "tensileStrengthCoeffs", "ironContent"
+        "tensileStrengthCoeffs", "ironContent", "surfaceIronExponent"
     };
     return names;
 }

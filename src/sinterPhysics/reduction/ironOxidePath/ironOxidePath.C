@@ -23,6 +23,14 @@ constexpr scalar MFe2O3 = 2*MFe + 3*MO;
 constexpr scalar MFe3O4 = 3*MFe + 4*MO;
 constexpr scalar MFeO = MFe + MO;
 
+// Densities of the dense phases [kg/m^3]: hematite and magnetite as the
+// thesis's Table 2.4, wustite and iron the handbook values (CRC Handbook
+// of Chemistry and Physics, physical constants of inorganic compounds)
+constexpr scalar rhoFe2O3 = 5240;
+constexpr scalar rhoFe3O4 = 5180;
+constexpr scalar rhoFeO = 5745;
+constexpr scalar rhoFe = 7874;
+
 // Iron mass fractions of hematite and magnetite
 constexpr scalar WFe2O3 = 2*MFe/MFe2O3;
 constexpr scalar WFe3O4 = 3*MFe/MFe3O4;
@@ -183,6 +191,21 @@ Foam::scalar Foam::ironOxidePath::metallicIron
     const scalar x = min(max(X, scalar(0)), scalar(1));
     const scalar start = T < TWustite ? X1_ : X2_;
     return x > start ? (x - start)/(1 - start) : 0;
+}
+
+
+Foam::scalar Foam::ironOxidePath::ironVolumeFraction
+(
+    const scalar X,
+    const scalar T
+) const
+{
+    const FixedList<scalar, 4> w(phases(X, T));
+    const scalar vIron = w[iron]/rhoFe;
+    const scalar v =
+        w[hematite]/rhoFe2O3 + w[magnetite]/rhoFe3O4 + w[wustite]/rhoFeO
+      + vIron;
+    return vIron/v;
 }
 
 

@@ -227,8 +227,55 @@ Foam::DEMCloud<CloudType>::DEMCloud
 
 
 template<class CloudType>
+const Foam::ironOxidePath& Foam::DEMCloud<CloudType>::reducedPath() const
+{
+    if (!path_.valid())
+    {
+        FatalIOErrorInFunction(this->constProps().dict())
+            << "Keyword reductionDegree0 "
+            << this->constProps().reductionDegree0() << " in "
+            << this->constProps().dict().name() << " starts the particles"
+            << " reduced, which needs their iron content: give ironContent"
+            << " (W0(TFe)) in the particles' material "
+            << collision_->engine().materials().particleDict().name()
+            << exit(FatalIOError);
+    }
+    return path_();
+}
+
+
+template<class CloudType>
 void Foam::DEMCloud<CloudType>::readReduction()
 {
+    const contactMaterials& materials = collision_->engine().materials();
+    const dictionary& particle = materials.particleDict();
+    if (particle.found("ironContent"))
+    {
+        path_.reset(new ironOxidePath(particle));
+    }
+    if (materials.reducedSurfaceDict())
+    {
+        if (!path_.valid())
+        {
+            FatalIOErrorInFunction(particle)
+                << "The materials name a reducedSurface (the iron on"
+                << " reduced particle surfaces), so the particles' material "
+                << particle.name() << " needs its ironContent, W0(TFe):"
+                << " the surface iron of a particle follows from its"
+                << " reduction degree and W0" << exit(FatalIOError);
+        }
+        surfaceIron_.reset(new surfaceIron(particle));
+        Info<< "    surface iron of the particles from their reduction"
+            << " degree: iron content W0 "
+            << surfaceIron_->path().ironContent() << ", surface enrichment"
+            << " exponent " << surfaceIron_->exponent() << endl;
+    }
+    if (this->constProps().reductionDegree0() > 0)
+    {
+        // Fatal here, not at the first injection, without ironContent
+        reducedPath();
+    }
+
     const dictionary* dictPtr =
         this->particleProperties().subDictPtr("reduction");
     if (!dictPtr)
@@ -402,6 +449,29 @@ void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
         Info<< "    Reduction: X mean " << sumX/n << " (" << minX << " to "
             << maxX << "), oxygen removed " << oxygen << " mol, reaction"
             << " heat " << heat << " J" << endl;
+    }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::DEMCloud<CloudType>::updateSurfaceIron(TrackCloudType& cloud)
+{
+    demParticles& P = collision_->engine().particles();
+    bool changed = false;
+    for (const parcelType& p : cloud)
+    {
+        const scalar f = surfaceIron_->fraction(p.reductionDegree(), p.T());
+        scalar& fp = P.surfaceIron[p.demIndex()];
+        if (f != fp)
+        {
+            fp = f;
+            changed = true;
+        }
+    }
+    if (returnReduce(changed, orOp<bool>()))
+    {
+        collision_->engine().invalidateLists();
     }
 }
 
@@ -640,6 +710,12 @@ void Foam::DEMCloud<CloudType>::motion
     if (reduction_.valid())
     {
         reduce(cloud);
+    }
+
+    // 1c. The iron on the particles' surfaces
+    if (surfaceIron_.valid())
+    {
+        updateSurfaceIron(cloud);
     }
 
     demEngine& engine = collision_->engine();
