@@ -53,8 +53,8 @@ Usage
         calibration         | powder, Tt, Td [K], exponent n (only with -calibrate) | -calibrate
         reductionDegrees    | list of X in [0, 1] of the reduced powders   | no (none)
         reducedSurface      | material (in materials) of the iron on reduced surfaces | with reductionDegrees
-        surfaceIronExponent | s of the surface iron fraction phi^s (surfaceIron), in (0, 1] | no | 1
-        ironCalibration     | strength {powder X Td} and surface {powder X Td}: -calibrate also prints the iron's constant tensile strength and s that put both T_d there | no
+        surfaceIronExponent | s of the surface iron fraction phi^s (surfaceIron), in (0, 1], default 1 | no
+        ironCalibration     | strength {powder reductionDegree Td} and surface {powder reductionDegree Td}: -calibrate also prints the iron's constant tensile strength and s that put both T_d there | no
     \endtable
     and in each powder ironContent, W0(TFe) of Table 3.1 (with
     reductionDegrees).
@@ -484,15 +484,16 @@ int main(int argc, char *argv[])
         }
 
         // F_sb - F_n at T of a powder reduced to X colliding at v, with
-        // surface exponent s and the iron's tensile strength sigmaFe (< 0:
-        // the material's)
+        // surface exponent s; the iron's tensile strength the material's,
+        // or sigmaFe with fixedStrength
         const auto balance = [&]
         (
             const powder& p,
             const scalar X,
             const scalar v,
             const scalar s,
-            const scalar sigmaFe
+            const bool fixedStrength = false,
+            const scalar sigmaFe = 0
         )
         {
             const surfaceIron surface(ironOxidePath(p.ironContent), s);
@@ -504,21 +505,23 @@ int main(int argc, char *argv[])
             const scalar Fn = hertz.maxNormalForce(v);
             const scalar tc = hertz.contactTime(v);
             const scalar rp = p.d/2;
-            return [&reducedBridge, surface, X, rp, Fn, tc, sigmaFe]
+            return [&reducedBridge, surface, X, rp, Fn, tc, fixedStrength, sigmaFe]
             (
                 const scalar T
             )
             {
                 const scalar f = surface.fraction(X, T);
-                if (sigmaFe < 0)
+                if (!fixedStrength)
                 {
                     return reducedBridge.force(rp, T, tc, f, f) - Fn;
                 }
-                const scalar share = ironOxideBridge::ironShare(f, f);
                 return
-                    (1 - share)*reducedBridge.oxide().force(rp, T, tc)
-                  + share*sigmaFe
-                   *reducedBridge.iron().forcePerStrength(rp, T, tc)
+                    ironOxideBridge::blend
+                    (
+                        reducedBridge.oxide().force(rp, T, tc),
+                        sigmaFe*reducedBridge.iron().forcePerStrength(rp, T, tc),
+                        ironOxideBridge::ironShare(f, f)
+                    )
                   - Fn;
             };
         };
@@ -565,18 +568,36 @@ int main(int argc, char *argv[])
                 surfaceCal, "Td", 200, 5000, "a temperature in kelvin"
             );
 
+            // F(T_s) = A + sigma B at the strength point; sigma > 0 needs
+            // iron on the surface there (B > 0) and an oxide that alone
+            // does not stick (A < 0)
             const auto sigmaFor = [&](const scalar s)
             {
-                // F(T) = A + sigma B at Ts0 equals zero
-                const scalar A = balance(ps, Xs0, vn.last(), s, 0)(Ts0);
-                const scalar B = balance(ps, Xs0, vn.last(), s, 1)(Ts0) - A;
+                const scalar A = balance(ps, Xs0, vn.last(), s, true, 0)(Ts0);
+                const scalar B =
+                    balance(ps, Xs0, vn.last(), s, true, 1)(Ts0) - A;
+                if (!(B > 0 && A < 0))
+                {
+                    FatalIOErrorInFunction(strength)
+                        << "ironCalibration/strength in " << strength.name()
+                        << ": no iron tensile strength puts " << ps.name
+                        << " at reductionDegree " << Xs0 << " at Td " << Ts0
+                        << " K: "
+                        << (B > 0
+                            ? "the oxide alone already sticks there"
+                            : "its surface holds no iron there (below the"
+                              " first iron, or in the wustite stage above"
+                              " 843.15 K)")
+                        << exit(FatalIOError);
+                }
                 return -A/B;
             };
             const auto TdFor = [&](const scalar s)
             {
                 return crossing
                 (
-                    balance(pf, Xf0, vn.last(), s, sigmaFor(s)), Tmin, Tmax
+                    balance(pf, Xf0, vn.last(), s, true, sigmaFor(s)),
+                    Tmin, Tmax
                 );
             };
 
@@ -588,12 +609,21 @@ int main(int argc, char *argv[])
                     << "No surface exponent s in [1e-3, 1] puts T_d of "
                     << pf.name << " at X = " << Xf0 << " at " << Tf0
                     << " K: it spans " << Tlo << " to " << Thi << " K"
+                    << " (-1: no crossing in [Tmin, Tmax])"
                     << exit(FatalIOError);
             }
             for (label iter = 0; iter < 60 && hi - lo > 1e-10; ++iter)
             {
                 const scalar mid = 0.5*(lo + hi);
-                (TdFor(mid) < Tf0 ? lo : hi) = mid;
+                const scalar Tmid = TdFor(mid);
+                if (Tmid < 0)
+                {
+                    FatalIOErrorInFunction(surfaceCal)
+                        << "T_d of " << pf.name << " has no crossing in"
+                        << " [Tmin, Tmax] at s = " << mid << ": widen the"
+                        << " range" << exit(FatalIOError);
+                }
+                (Tmid < Tf0 ? lo : hi) = mid;
             }
             const scalar s = 0.5*(lo + hi);
             const scalar sigmaFe = sigmaFor(s);
@@ -625,11 +655,11 @@ int main(int argc, char *argv[])
             {
                 const scalar Tt = crossing
                 (
-                    balance(p, X, vn.first(), sExponent, -1), Tmin, Tmax
+                    balance(p, X, vn.first(), sExponent), Tmin, Tmax
                 );
                 const scalar Td = crossing
                 (
-                    balance(p, X, vn.last(), sExponent, -1), Tmin, Tmax
+                    balance(p, X, vn.last(), sExponent), Tmin, Tmax
                 );
                 const scalar f = Td > 0 ? surface.fraction(X, Td) : -1;
                 Info<< "reduced " << setw(6) << p.name << "  X "

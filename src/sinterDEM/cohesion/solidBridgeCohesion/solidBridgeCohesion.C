@@ -115,12 +115,16 @@ void Foam::cohesionModels::solidBridge::Factors::evaluate(const scalar T)
     }
     rate_ = law_.neckGrowthRate(1, T);
     strength_ = scale_*law_.forceFromNeck(1, T);
-    if (ironLaw_)
-    {
-        ironRate_ = ironLaw_->neckGrowthRate(1, T);
-        ironStrength_ = scale_*ironLaw_->forceFromNeck(1, T);
-    }
     T_ = T;
+}
+
+
+void Foam::cohesionModels::solidBridge::Factors::evaluateIron(const scalar T)
+{
+    // T was checked by evaluate: the oxide's factors come first
+    ironRate_ = ironLaw_->neckGrowthRate(1, T);
+    ironStrength_ = scale_*ironLaw_->forceFromNeck(1, T);
+    ironT_ = T;
 }
 
 

@@ -37,14 +37,7 @@ Foam::scalar Foam::ironOxideBridge::force
 ) const
 {
     const scalar p = ironShare(fi, fj);
-    scalar F = 0;
-    if (p < 1)
-    {
-        F += (1 - p)*oxide_.force(rp, T, t);
-    }
-    if (p > 0)
-    {
-        F += p*iron_.force(rp, T, t);
-    }
-    return F;
+    const scalar Fox = p < 1 ? oxide_.force(rp, T, t) : 0;
+    const scalar FFe = p > 0 ? iron_.force(rp, T, t) : 0;
+    return blend(Fox, FFe, p);
 }

@@ -270,6 +270,14 @@ void Foam::DEMCloud<CloudType>::readReduction()
             << surfaceIron_->path().ironContent() << ", surface enrichment"
             << " exponent " << surfaceIron_->exponent() << endl;
     }
+    else if (particle.found("surfaceIronExponent"))
+    {
+        WarningInFunction
+            << "Keyword surfaceIronExponent of " << particle.name()
+            << " is not used: the materials name no reducedSurface (the"
+            << " iron of reduced surfaces), so the bridges are the"
+            << " particles' material's alone" << endl;
+    }
     if (this->constProps().reductionDegree0() > 0)
     {
         // Fatal here, not at the first injection, without ironContent
