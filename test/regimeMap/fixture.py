@@ -84,6 +84,16 @@ def check(mapdir, log):
            f'T_t {crit[2] if crit else None} degC (expected 625)')
     report(crit is not None and crit[5] == '775',
            f'T_d {crit[5] if crit else None} degC (expected 775)')
+    # the force balance of this tree (defluidizationMap run by classify)
+    # next to Table 2.5's, tiny powder: 594 and 993 degC, within 5 K
+    for col, what in ((4, 'T_t'), (7, 'T_d')):
+        try:
+            thesis, here = (float(v) for v in crit[col].split('/'))
+            good = abs(here - thesis) <= 5 and thesis in (594, 993)
+        except (TypeError, ValueError, IndexError):
+            good = False
+        report(good, f'force balance {what} (Table 2.5/here) '
+                     f'{crit[col] if crit else None} degC')
     png = os.path.join(mapdir, 'regimeMap.png')
     if os.path.exists(png):
         import matplotlib.image as mpimg
