@@ -11,9 +11,13 @@ bubbling bed (STD 0.08) before activation and as each regime after:
   923.15, 973.15 K         unstable: Δp/(W/A) 0.1 lower from 1.5 s on,
                            still fluctuating
   1023.15 K                unstable: Δp as before, largest agglomerate 0.5
-  >= 1073.15 K             defluidized: Δp/(W/A) 0.7 from 1 s on, STD 0.005
-  1123.15 K                also a run stopped at 2 s: left out
-Expected: T_t 898.15 K (625 degC), T_d 1048.15 K (775 degC)."""
+  1073.15 K                frozen: a lifted block, Δp/(W/A) 1.1 from 1 s
+                           on, STD 0.003, largest agglomerate 0.98
+  >= 1123.15 K             defluidized: Δp/(W/A) 0.7 from 1 s on, STD 0.005
+  1123.15 K                a run stopped at 2 s: left out
+Expected: T_t 898.15 K (625 degC), T_f 1048.15 K (775 degC), T_d
+1123.15 K (850 degC: between 1073.15 and 1173.15 K, 1123.15 K left
+out)."""
 import os
 import sys
 
@@ -27,6 +31,8 @@ def regime(T):
         return 'stable'
     if T <= 1023.15:
         return 'unstable'
+    if T == 1073.15:
+        return 'frozen'
     return 'defluidized'
 
 
@@ -43,7 +49,11 @@ def write(mapdir):
             r[t >= 1.5] -= 0.1
         elif T == 1023.15:
             largest[t >= 1.0] = 0.5
-        elif T >= 1073.15:
+        elif T == 1073.15:
+            late = t >= 1.0
+            r[late] = 1.1 + 0.003*rng.standard_normal(late.sum())
+            largest[late] = 0.98
+        elif T >= 1123.15:
             late = t >= 1.0
             r[late] = 0.7 + 0.005*rng.standard_normal(late.sum())
         wa = 245.0
@@ -82,8 +92,10 @@ def check(mapdir, log):
            'the unfinished run is named in the log')
     report(crit is not None and crit[2] == '625',
            f'T_t {crit[2] if crit else None} degC (expected 625)')
-    report(crit is not None and crit[5] == '775',
-           f'T_d {crit[5] if crit else None} degC (expected 775)')
+    report(crit is not None and crit[5] == '850',
+           f'T_d {crit[5] if crit else None} degC (expected 850)')
+    report(crit is not None and crit[-1] == '775',
+           f'T_f {crit[-1] if crit else None} degC (expected 775)')
     # the force balance of this tree (defluidizationMap run by classify)
     # next to Table 2.5's, tiny powder: 594 and 993 degC, within 5 K
     for col, what in ((4, 'T_t'), (7, 'T_d')):
