@@ -10,7 +10,8 @@ off a kept series of Δp/(W/A) (a summary's pressureDrop.dat):
                                 `width` seconds ending at each sample
 
 RATIO and STD are the function object's ratioBelow and stdBelow
-defaults."""
+defaults; its window (0.2 s by default) and its `duration` are not
+applied here: a kept series flags over WINDOW, at the first sample."""
 import numpy as np
 
 RATIO = 0.8
