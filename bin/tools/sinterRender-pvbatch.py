@@ -16,7 +16,10 @@ ap.add_argument('--out', required=True)
 ap.add_argument('--size', nargs=2, type=int, required=True)
 ap.add_argument('--fields', nargs='+', required=True)
 ap.add_argument('--times', nargs='+', required=True)
+ap.add_argument('--range', nargs='+', default=[])   # FIELD LO HI ...
 a = ap.parse_args()
+fixed = {a.range[i]: (float(a.range[i + 1]), float(a.range[i + 2]))
+         for i in range(0, len(a.range), 3)}
 
 
 
@@ -145,7 +148,9 @@ for t in a.times:
     label = Text(Text=f't = {t} s, {n} parcels')
     for field in wanted:
         lo, hi = ranges[field]
-        if field == 'U':
+        if field in fixed:
+            lo, hi = fixed[field]
+        elif field == 'U':
             lo = 0.0
             hi = max(array_range(merged, 'POINTS', 'U', -1)[1], 1e-12)
         elif field == 'agglomerateId':
@@ -167,7 +172,8 @@ for t in a.times:
         Render(view)
         path = os.path.join(a.out, f'particles_{field}_{t}.png')
         SaveScreenshot(path, view, ImageResolution=a.size)
-        print(f'sinterRender: wrote {path} ({n} parcels)')
+        print(f'sinterRender: wrote {path} ({n} parcels, colours'
+              f' {lo:g} to {hi:g})')
         Hide(spheres, view)
         Hide(outline, view)
         Hide(label, view)
