@@ -2,8 +2,10 @@
 """A function object's time series across restarts.
 
 A run restarted at time t writes its function objects' files under
-postProcessing/<function>/<t>/; merged() joins them in time, the rows of a
-later start replacing those from it on (a run repeated after a stop)."""
+postProcessing/<function>/<t>/, from its first step after t; merged() joins
+them in time, the rows of a later start replacing those from its first row
+on (a run repeated after a stop). The earlier run's row at t itself, the
+state the restart began from, is kept."""
 import glob
 import os
 
@@ -24,7 +26,7 @@ def merged(case, function, name):
         if d.size == 0:
             continue
         if rows is not None:
-            rows = np.vstack([rows[rows[:, 0] < start - 1e-12], d])
+            rows = np.vstack([rows[rows[:, 0] < d[0, 0] - 1e-12], d])
         else:
             rows = d
     return rows
