@@ -10,11 +10,33 @@ state the restart began from, is kept.
 A run killed before it wrote its first time is started again from the same
 time t: its files are already in postProcessing/<function>/<t>/, and
 OpenFOAM then names the new run's file <name>_<t>.dat beside the old
-<name>.dat. That file is the later attempt and is taken instead."""
+<name>.dat. That file is the later attempt and is taken instead.
+
+A run killed while writing a line leaves that line short: rows with fewer
+numbers than the file's widest row are left out (and counted)."""
 import glob
 import os
+import re
 
 import numpy as np
+
+
+def rows(path):
+    """(array of the file's complete numeric rows, number of rows left out)"""
+    parsed = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            try:
+                parsed.append([float(x) for x in line.split()])
+            except ValueError:
+                parsed.append([])
+    if not parsed:
+        return np.empty((0, 0)), 0
+    width = max(len(r) for r in parsed)
+    kept = [r for r in parsed if len(r) == width]
+    return np.array(kept), len(parsed) - len(kept)
 
 
 def latestAttempt(directory, name):
@@ -28,21 +50,62 @@ def latestAttempt(directory, name):
     return None
 
 
-def merged(case, function, name):
-    """Rows of postProcessing/<function>/*/<name>, later starts overriding,
-    or None if there are none"""
-    parts = []
-    for d in glob.glob(os.path.join(case, 'postProcessing', function, '*')):
-        path = latestAttempt(d, name)
-        if path is not None:
-            parts.append((float(os.path.basename(d)), path))
-    rows = None
-    for start, path in sorted(parts):
-        d = np.loadtxt(path, comments='#', ndmin=2)
-        if d.size == 0:
+def startTimes(functionDir):
+    """The start-time directories of postProcessing/<function>, as
+    (time, path) in time order"""
+    found = []
+    for d in glob.glob(os.path.join(functionDir, '*')):
+        try:
+            found.append((float(os.path.basename(d)), d))
+        except ValueError:
             continue
-        if rows is not None:
-            rows = np.vstack([rows[rows[:, 0] < d[0, 0] - 1e-12], d])
+    return sorted(found)
+
+
+def seriesName(functionDir):
+    """The one file name written under every start time of
+    postProcessing/<function> (a killed attempt's <name>_<t>.dat aside);
+    raises ValueError if there is none or more than one"""
+    names = set()
+    for _, d in startTimes(functionDir):
+        t = re.escape(os.path.basename(d))
+        for path in glob.glob(os.path.join(d, '*.dat')):
+            base = os.path.basename(path)
+            if not re.search('_' + t + r'\.dat$', base):
+                names.add(base)
+    if len(names) != 1:
+        raise ValueError(
+            f'{functionDir}: expected one .dat file per start time, found '
+            + (', '.join(sorted(names)) if names else 'none'))
+    return names.pop()
+
+
+def mergedDirectory(functionDir, name=None):
+    """(rows of functionDir/*/<name> joined across restarts, or None;
+    incomplete rows left out). name defaults to seriesName(functionDir)"""
+    if name is None:
+        name = seriesName(functionDir)
+    series = None
+    dropped = 0
+    for _, d in startTimes(functionDir):
+        path = latestAttempt(d, name)
+        if path is None:
+            continue
+        part, short = rows(path)
+        dropped += short
+        if part.size == 0:
+            continue
+        if series is not None:
+            if part.shape[1] != series.shape[1]:
+                raise ValueError(f'{path}: {part.shape[1]} columns, the '
+                                 f'earlier start times {series.shape[1]}')
+            series = np.vstack([series[series[:, 0] < part[0, 0] - 1e-12], part])
         else:
-            rows = d
-    return rows
+            series = part
+    return series, dropped
+
+
+def merged(case, function, name):
+    """Rows of case/postProcessing/<function>/*/<name>, later starts
+    overriding, or None if there are none"""
+    return mergedDirectory(os.path.join(case, 'postProcessing', function), name)[0]
