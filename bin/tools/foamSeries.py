@@ -105,6 +105,15 @@ def mergedDirectory(functionDir, name=None):
     return series, dropped
 
 
+def series(path, name=None):
+    """(rows, rows left out) of a file, or of a postProcessing/<function>
+    directory joined across restarts (mergedDirectory; rows None if it
+    has none)"""
+    if os.path.isdir(path):
+        return mergedDirectory(path, name)
+    return rows(path)
+
+
 def merged(case, function, name):
     """Rows of case/postProcessing/<function>/*/<name>, later starts
     overriding, or None if there are none"""
