@@ -17,6 +17,7 @@ numbers than the file's widest row are left out (and counted)."""
 import glob
 import os
 import re
+import sys
 
 import numpy as np
 
@@ -112,6 +113,24 @@ def series(path, name=None):
     if os.path.isdir(path):
         return mergedDirectory(path, name)
     return rows(path)
+
+
+def seriesOrExit(path, tool, columns, expected, name=None, label=None):
+    """series(path, name) for a command-line tool: exits with a message
+    naming the tool and the path (or label) if it cannot be read, holds no
+    rows or has fewer than `columns` numbers per row (`expected` says
+    what); says how many incomplete lines were left out"""
+    try:
+        d, dropped = series(path, name)
+    except (OSError, ValueError) as e:
+        sys.exit(f"{tool}: cannot read {label or path}: {e}")
+    if dropped:
+        print(f"{tool}: left out {dropped} incomplete line(s) of {path}")
+    if d is None or d.size == 0:
+        sys.exit(f"{tool}: no data in {path}")
+    if d.shape[1] < columns:
+        sys.exit(f"{tool}: {path} has {d.shape[1]} columns, {expected}")
+    return d
 
 
 def merged(case, function, name):
