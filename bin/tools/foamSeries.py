@@ -133,6 +133,21 @@ def seriesOrExit(path, tool, columns, expected, name=None, label=None):
     return d
 
 
+def windowOrExit(t, t0, t1, tool):
+    """(T0, T1, mask of T0 <= t <= T1) for a tool's --from/--to (None: the
+    series' first or last time); exits with a message naming the tool if
+    both are given the wrong way round or the window holds no row"""
+    if t0 is not None and t1 is not None and t1 < t0:
+        sys.exit(f"{tool}: --to {t1:g} is before --from {t0:g}")
+    t0 = t[0] if t0 is None else t0
+    t1 = t[-1] if t1 is None else t1
+    w = (t >= t0) & (t <= t1)
+    if not w.any():
+        sys.exit(f"{tool}: no evaluation in {t0:g} <= t <= {t1:g}"
+                 f" (the series runs {t[0]:g} to {t[-1]:g})")
+    return t0, t1, w
+
+
 def merged(case, function, name):
     """Rows of case/postProcessing/<function>/*/<name>, later starts
     overriding, or None if there are none"""
