@@ -6,6 +6,9 @@ off a kept series of Δp/(W/A) (a summary's pressureDrop.dat):
                                 which the mean of Δp/(W/A) over the last
                                 WINDOW seconds is below RATIO and its
                                 standard deviation below STD, or None
+    frozenAt(t, ratio, after)   the same for a frozen bed: the standard
+                                deviation below STD, the mean RATIO or
+                                more (the gas carries the still bed)
     moving(t, x, width)         the mean and STD of x over the window of
                                 `width` seconds ending at each sample
 
@@ -33,4 +36,10 @@ def moving(t, x, width):
 def flaggedAt(t, ratio, after):
     m, s = moving(t, ratio, WINDOW)
     f = (t > after + WINDOW) & (m < RATIO) & (s < STD)
+    return t[f][0] if f.any() else None
+
+
+def frozenAt(t, ratio, after):
+    m, s = moving(t, ratio, WINDOW)
+    f = (t > after + WINDOW) & (m >= RATIO) & (s < STD)
     return t[f][0] if f.any() else None

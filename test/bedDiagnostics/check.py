@@ -2,17 +2,20 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Checks of bedPressureDrop's window statistics and defluidization flag.
 
-    check.py window DAT WINDOW RATIO STD DURATION
+    check.py window DAT WINDOW RATIO STD DURATION STATE
         dp_mean and dp_std of every row recomputed here from the dp column
         over the samples t_i of the last WINDOW seconds (t - t_i < WINDOW
         to half a step); dp_mean within 1e-9 relative, dp_std within
-        1e-7 dp_mean (the file prints dp to 11 digits); the flag of every
-        row equal to the rule applied here (window full, W/A > 0,
-        dp_mean/(W/A) < RATIO and dp_std/(W/A) < STD at every step for
-        DURATION seconds); the flag must trip, once.
+        1e-7 dp_mean (the file prints dp to 11 digits); both flags of
+        every row equal to the rule applied here: a step is still when
+        the window is full, W/A > 0 and dp_std/(W/A) < STD, and looks
+        defluidized when still with dp_mean/(W/A) < RATIO, frozen when
+        still with dp_mean/(W/A) >= RATIO; a flag is up once every step
+        for DURATION seconds has looked so. The flag of STATE
+        (defluidized or frozen) must trip, once; the other never.
     check.py restart FULLDAT RESTARTDAT
         every row of the restarted run equal to the uninterrupted run's: dp and dp_mean within 1e-9 relative, dp_std
-        within 1e-7 dp_mean, the flag the same.
+        within 1e-7 dp_mean, both flags the same.
 """
 import sys
 
@@ -27,16 +30,18 @@ def load(path):
     return np.array(rows)
 
 
-def window(path, win, ratio, stdmax, duration):
+def window(path, win, ratio, stdmax, duration, state):
     d = load(path)
-    t, dp, wa, mean_f, std_f, flag_f = d[:, 0], d[:, 1], d[:, 2], d[:, 5], d[:, 6], d[:, 7]
+    t, dp, wa, mean_f, std_f = d[:, 0], d[:, 1], d[:, 2], d[:, 5], d[:, 6]
+    written = {'defluidized': d[:, 7], 'frozen': d[:, 8]}
     dt = t[1] - t[0]
     ok = True
     first = 0
-    since = None
-    flag = False
-    trips = []
-    bad_mean = bad_std = bad_flag = 0
+    since = {k: None for k in written}
+    flag = {k: False for k in written}
+    trips = {k: [] for k in written}
+    bad_mean = bad_std = 0
+    bad_flag = {k: 0 for k in written}
     for k in range(len(t)):
         while t[k] - t[first] >= win - 0.5 * dt:
             first += 1
@@ -48,30 +53,38 @@ def window(path, win, ratio, stdmax, duration):
         if abs(s - std_f[k]) > 1e-7 * abs(m):
             bad_std += 1
         full = t[k] - t[0] >= win - 0.5 * dt
-        looks = full and wa[k] > 0 and m / wa[k] < ratio and s / wa[k] < stdmax
-        if not looks:
-            since = None
-            flag = False
-        else:
-            if since is None:
-                since = t[k]
-            if not flag and t[k] - since >= duration - 0.5 * dt:
-                flag = True
-                trips.append((t[k], since, m / wa[k], s / wa[k]))
-        if int(flag) != int(flag_f[k]):
-            bad_flag += 1
+        still = full and wa[k] > 0 and s / wa[k] < stdmax
+        looks = {'defluidized': still and m / wa[k] < ratio,
+                 'frozen': still and m / wa[k] >= ratio}
+        for name in written:
+            if not looks[name]:
+                since[name] = None
+                flag[name] = False
+            else:
+                if since[name] is None:
+                    since[name] = t[k]
+                if not flag[name] and t[k] - since[name] >= duration - 0.5 * dt:
+                    flag[name] = True
+                    trips[name].append((t[k], since[name], m / wa[k], s / wa[k]))
+            if int(flag[name]) != int(written[name][k]):
+                bad_flag[name] += 1
     print(f'{len(t)} rows: dp_mean off in {bad_mean}, dp_std off in {bad_std},'
-          f' flag off in {bad_flag}')
-    for tt, since, r, sr in trips:
-        print(f'flag trips at t = {tt:g} s (looked defluidized since {since:g} s;'
-              f' dp_mean/(W/A) {r:.4f}, dp_std/(W/A) {sr:.2e})')
-    written = [t[k] for k in range(1, len(t)) if flag_f[k] == 1 and flag_f[k - 1] == 0]
-    print(f'flag trips in the file at {written}')
-    if bad_mean or bad_std or bad_flag:
+          f' flags off in {bad_flag}')
+    for name in written:
+        for tt, s0, r, sr in trips[name]:
+            print(f'{name} flag trips at t = {tt:g} s (looked so since {s0:g} s;'
+                  f' dp_mean/(W/A) {r:.4f}, dp_std/(W/A) {sr:.2e})')
+        f = written[name]
+        print(f'{name} flag trips in the file at'
+              f' {[t[k] for k in range(1, len(t)) if f[k] == 1 and f[k - 1] == 0]}')
+    if bad_mean or bad_std or any(bad_flag.values()):
         ok = False
-    if len(trips) != 1:
-        print(f'FAIL: expected the flag to trip once, not {len(trips)} times')
-        ok = False
+    for name in written:
+        want = 1 if name == state else 0
+        if len(trips[name]) != want:
+            print(f'FAIL: expected the {name} flag to trip {want} time(s),'
+                  f' not {len(trips[name])}')
+            ok = False
     return ok
 
 
@@ -90,7 +103,7 @@ def restart(full_path, restart_path):
         if (abs(row[1] - ref[1]) > 1e-9 * abs(ref[1])
                 or abs(row[5] - ref[5]) > 1e-9 * m
                 or abs(row[6] - ref[6]) > 1e-7 * m
-                or row[7] != ref[7]):
+                or row[7] != ref[7] or row[8] != ref[8]):
             bad += 1
             if bad <= 3:
                 print(f'differs at t = {row[0]}: restarted {row[1:]}, full {ref[1:]}')
@@ -103,7 +116,7 @@ def restart(full_path, restart_path):
 def main():
     mode = sys.argv[1]
     if mode == 'window':
-        ok = window(sys.argv[2], *[float(v) for v in sys.argv[3:7]])
+        ok = window(sys.argv[2], *[float(v) for v in sys.argv[3:7]], sys.argv[7])
     elif mode == 'restart':
         ok = restart(sys.argv[2], sys.argv[3])
     else:

@@ -7,7 +7,9 @@
     check.py restart CASE SERIALCASE
 
 Hand values: beads of d = 0.5 mm, z(t) = 5 mm + U t, U = 0.09 m/s (two,
-at x = 0.6 and 4.6 mm) and -0.04 m/s (two), one step 1e-4 s, 300 steps.
+at x = 0.6 and 4.6 mm) and -0.04 m/s (two), one step 1e-4 s, 300 steps;
+the mesh's floor at z = 0, gravity along -z: mean height 5 mm + 0.025 t,
+highest 5 mm + 0.09 t.
 Tolerances: 1e-12 relative (the values are sums of a few doubles; the
 positions that decide cells and slab are never within 1e-9 m of a face).
 """
@@ -49,7 +51,8 @@ def serial(case):
         s = stats[k]
         shared = z_up(t) < 6e-3            # each rising bead in its pair's cell
         expect = [t, 4, 4, 300, 0, 300, 300, 0.065, 0.025, 0.09,
-                  theta_pair if shared else 0]
+                  theta_pair if shared else 0,
+                  5e-3 + 0.025 * t, z_up(t)]     # heights above the floor z = 0
         good = len(s) == len(expect) and all(close(a, b) for a, b in zip(s, expect))
         in_slab = 6.5e-3 <= z_up(t) < 7.5e-3
         n_in += in_slab

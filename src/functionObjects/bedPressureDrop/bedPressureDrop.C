@@ -56,9 +56,7 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     stdBelow_(0),
     duration_(0),
     first_(0),
-    historyStart_(-1),
-    lookedSince_(-1),
-    defluidized_(false)
+    historyStart_(-1)
 {
     read(dict);
     restoreState();
@@ -75,6 +73,7 @@ Foam::functionObjects::bedPressureDrop::bedPressureDrop
     writeTabbed(file(), "dp_mean");
     writeTabbed(file(), "dp_std");
     writeTabbed(file(), "defluidized");
+    writeTabbed(file(), "frozen");
     file() << endl;
 }
 
@@ -153,8 +152,10 @@ void Foam::functionObjects::bedPressureDrop::storeState()
     setProperty("windowTimes", scalarList(SubList<scalar>(sampleTime_, n, first_)));
     setProperty("windowDp", scalarList(SubList<scalar>(sampleDp_, n, first_)));
     setProperty("historyStart", historyStart_);
-    setProperty("lookedDefluidizedSince", lookedSince_);
-    setProperty("defluidized", defluidized_);
+    setProperty("lookedDefluidizedSince", defluidized_.since);
+    setProperty("defluidized", defluidized_.flag);
+    setProperty("lookedFrozenSince", frozen_.since);
+    setProperty("frozen", frozen_.flag);
 }
 
 
@@ -168,10 +169,44 @@ void Foam::functionObjects::bedPressureDrop::restoreState()
     sampleDp_ = getProperty<scalarList>("windowDp");
     first_ = 0;
     historyStart_ = getProperty<scalar>("historyStart");
-    lookedSince_ = getProperty<scalar>("lookedDefluidizedSince");
-    defluidized_ = getProperty<bool>("defluidized");
+    defluidized_.since = getProperty<scalar>("lookedDefluidizedSince");
+    defluidized_.flag = getProperty<bool>("defluidized");
+    // A state stored before the frozen state was diagnosed: it starts now
+    if (foundProperty("frozen"))
+    {
+        frozen_.since = getProperty<scalar>("lookedFrozenSince");
+        frozen_.flag = getProperty<bool>("frozen");
+    }
     Info<< type() << ' ' << name() << ": continues its window of "
         << sampleTime_.size() << " samples from the stored state" << endl;
+}
+
+
+bool Foam::functionObjects::bedPressureDrop::update
+(
+    stillState& state,
+    const bool looks,
+    const scalar t,
+    const scalar dt
+) const
+{
+    if (!looks)
+    {
+        state.since = -1;
+        const bool changed = state.flag;
+        state.flag = false;
+        return changed;
+    }
+    if (state.since < 0)
+    {
+        state.since = t;
+    }
+    if (!state.flag && t - state.since >= duration_ - 0.5*dt)
+    {
+        state.flag = true;
+        return true;
+    }
+    return false;
 }
 
 
@@ -241,36 +276,44 @@ bool Foam::functionObjects::bedPressureDrop::execute()
 
     // The diagnosis
     const bool full = t - historyStart_ >= window_ - 0.5*dt;
-    const bool looks =
-        full && WbyA > 0
-     && mean/WbyA < ratioBelow_ && stdDev/WbyA < stdBelow_;
-    if (!looks)
+    const bool still = full && WbyA > 0 && stdDev/WbyA < stdBelow_;
+    const scalar ratio = WbyA > 0 ? mean/WbyA : 0;
+    const scalar stdRatio = WbyA > 0 ? stdDev/WbyA : 0;
+    const bool collapsed = still && ratio < ratioBelow_;
+
+    const string over
+    (
+        " s: over the last " + Foam::name(window_) + " s dp_mean/(W/A) = "
+      + Foam::name(ratio) + ", dp_std/(W/A) = " + Foam::name(stdRatio)
+    );
+    if (update(defluidized_, collapsed, t, dt))
     {
-        lookedSince_ = -1;
-        if (defluidized_)
+        if (defluidized_.flag)
         {
-            defluidized_ = false;
-            Info<< type() << ' ' << name() << ": the bed is fluidized again"
-                << " at t = " << t << " s: over the last " << window_
-                << " s dp_mean/(W/A) = " << (WbyA > 0 ? mean/WbyA : 0)
-                << ", dp_std/(W/A) = " << (WbyA > 0 ? stdDev/WbyA : 0)
+            Info<< type() << ' ' << name() << ": the bed defluidized at t = "
+                << t << over.c_str() << " (< " << ratioBelow_ << " and < "
+                << stdBelow_ << " since t = " << defluidized_.since << " s)"
                 << endl;
         }
-    }
-    else
-    {
-        if (lookedSince_ < 0)
+        else
         {
-            lookedSince_ = t;
+            Info<< type() << ' ' << name() << ": the bed is no longer"
+                << " defluidized at t = " << t << over.c_str() << endl;
         }
-        if (!defluidized_ && t - lookedSince_ >= duration_ - 0.5*dt)
+    }
+    if (update(frozen_, still && !collapsed, t, dt))
+    {
+        if (frozen_.flag)
         {
-            defluidized_ = true;
-            Info<< type() << ' ' << name() << ": the bed defluidized at t = "
-                << t << " s: over the last " << window_ << " s dp_mean/(W/A) = "
-                << mean/WbyA << " < " << ratioBelow_ << " and dp_std/(W/A) = "
-                << stdDev/WbyA << " < " << stdBelow_ << " since t = "
-                << lookedSince_ << " s" << endl;
+            Info<< type() << ' ' << name() << ": the bed froze at t = "
+                << t << over.c_str() << " (>= " << ratioBelow_ << ": the gas"
+                << " carries it; < " << stdBelow_ << ": it does not bubble;"
+                << " since t = " << frozen_.since << " s)" << endl;
+        }
+        else
+        {
+            Info<< type() << ' ' << name() << ": the bed is no longer"
+                << " frozen at t = " << t << over.c_str() << endl;
         }
     }
 
@@ -280,7 +323,8 @@ bool Foam::functionObjects::bedPressureDrop::execute()
             << time.timeName() << tab << dp << tab << WbyA << tab
             << (WbyA > 0 ? dp/WbyA : 0) << tab
             << (mass > 0 ? massVoidage/mass : 1) << tab
-            << mean << tab << stdDev << tab << label(defluidized_) << endl;
+            << mean << tab << stdDev << tab << label(defluidized_.flag)
+            << tab << label(frozen_.flag) << endl;
     }
 
     if (time.writeTime())

@@ -7,6 +7,7 @@
 #include "boundedKeyword.H"
 #include "volFields.H"
 #include "OFstream.H"
+#include "gravityMeshObject.H"
 
 namespace Foam
 {
@@ -44,7 +45,7 @@ Foam::functionObjects::particleStatistics::particleStatistics
             const char* c :
             {
                 "parcels", "particles", "T_mean", "T_std", "T_min", "T_max",
-                "U_mean", "U_std", "U_max", "Theta_mean"
+                "U_mean", "U_std", "U_max", "Theta_mean", "z_mean", "z_max"
             }
         )
         {
@@ -121,15 +122,31 @@ bool Foam::functionObjects::particleStatistics::execute()
     const basicSinterCloud& cloud = *findSinterCloud(mesh_, cloudName_);
     const volScalarField& Theta =
         mesh_.lookupObject<volScalarField>("granularTemperature");
+    // and the parcels' heights above the mesh's lowest point, along -g
+    // (along z without gravity)
+    const vector g = meshObjects::gravity::New(mesh_.time()).value();
+    const vector up = mag(g) > 0 ? -g/mag(g) : vector(0, 0, 1);
+    const scalar floor = gMin(mesh_.points() & up);
     label parcels = 0;
     scalar sumTheta = 0;
+    scalar mass = 0;
+    scalar massHeight = 0;
+    scalar top = 0;
     for (const basicSinterParcel& p : cloud)
     {
         ++parcels;
         sumTheta += Theta[p.cell()];
+        const scalar m = p.nParticle()*p.mass();
+        const scalar z = (p.position() & up) - floor;
+        mass += m;
+        massHeight += m*z;
+        top = max(top, z);
     }
     reduce(parcels, sumOp<label>());
     reduce(sumTheta, sumOp<scalar>());
+    reduce(mass, sumOp<scalar>());
+    reduce(massHeight, sumOp<scalar>());
+    reduce(top, maxOp<scalar>());
 
     if (Pstream::master() && writeToFile())
     {
@@ -138,7 +155,8 @@ bool Foam::functionObjects::particleStatistics::execute()
             << speed.total() << tab << Tmass.mean() << tab << Tmass.stdDev()
             << tab << Tmass.min() << tab << Tmass.max() << tab
             << speed.mean() << tab << speed.stdDev() << tab << speed.max()
-            << tab << (parcels ? sumTheta/parcels : 0) << endl;
+            << tab << (parcels ? sumTheta/parcels : 0)
+            << tab << (mass > 0 ? massHeight/mass : 0) << tab << top << endl;
     }
     return true;
 }

@@ -29,7 +29,13 @@ Description
       - activation at 0.0050005 s: the neck grows over the last 5000
         steps only, F = eq 5.10 with t = 0.005 s (0.1 %);
       - coarse graining: Pi = F/(r^2 rho v0^2) is the same for K = 4 at
-        t = 4 ms and K = 6 at t = 6 ms, the same t* = t v0/r (1e-9).
+        t = 4 ms and K = 6 at t = 6 ms, the same t* = t v0/r (1e-9);
+        at t = 0.01 s and 1000 degC, F of K = 4 and 6 is K^(12/7) (the
+        default, contactTime), K^2 (stress: F/(K r_p)^2 the primaries')
+        and K^3 (bondNumber: F/(m g) the primaries') times eq 5.10 of the
+        primaries (0.1 %);
+      - wallBridges no: a particle held on a wall for 0.01 s at 1000 degC
+        has no bridge force (0 exactly), and pairs keep theirs.
 
     Reduced surfaces (materials with reducedSurface iron: gamma 2 N/m,
     delta 2.8665e-10 m, D = 1.88e-5 exp(-160.7 kJ/mol/(R T)) m^2/s, sigma
@@ -88,6 +94,7 @@ struct result
 
 
 //- Cohesive force after n steps: engine with cohesion minus without
+//  (extra: more solidBridgeCoeffs entries)
 result run
 (
     const scalar K,
@@ -95,12 +102,16 @@ result run
     const label n,
     const string& C = "smooth",
     const scalar tAct = 0,
-    const word& neckIntegration = "exact"
+    const word& neckIntegration = "exact",
+    const std::string& extra = ""
 )
 {
     demEngine with
     (
-        sinteringEngineDict("solidBridge", C, tAct, "wall", neckIntegration),
+        sinteringEngineDict
+        (
+            "solidBridge", C, tAct, "wall", neckIntegration, extra
+        ),
         hematiteMaterials(),
         K
     );
@@ -135,7 +146,8 @@ scalar wallRun
     const scalar Tp,
     const scalar Tw,
     const label n,
-    const word& wallTemperature
+    const word& wallTemperature,
+    const std::string& extra = ""
 )
 {
     const scalar L = 10*rPrimary;
@@ -153,7 +165,8 @@ scalar wallRun
         (
             sinteringEngineDict
             (
-                k ? "none" : "solidBridge", "smooth", 0, wallTemperature
+                k ? "none" : "solidBridge", "smooth", 0, wallTemperature,
+                "exact", extra
             ),
             hematiteMaterials(),
             1
@@ -405,6 +418,45 @@ int main(int argc, char *argv[])
     const scalar Pi4 = run(4, 1273.15, 4000).force/(sqr(4*rPrimary)*5240);
     const scalar Pi6 = run(6, 1273.15, 6000).force/(sqr(6*rPrimary)*5240);
     check("Pi(K 6, t* equal)/Pi(K 4)", Pi6/Pi4, 1, 1e-9);
+
+    // The coarse-graining rules: F_parcel = K^a F_sb of the primaries
+    {
+        const scalar F1 = reference(1, 1273.15, 0.01, 1);
+        for (const scalar K : {4.0, 6.0})
+        {
+            const std::initializer_list<std::pair<std::string, scalar>> rules
+            {
+                {"", 12.0/7.0},
+                {"coarseGraining contactTime;", 12.0/7.0},
+                {"coarseGraining stress;", 2},
+                {"coarseGraining bondNumber;", 3}
+            };
+            for (const auto& rule : rules)
+            {
+                check
+                (
+                    "F_sb, K = " + Foam::name(K) + " {" + rule.first
+                  + "}/(K^" + Foam::name(rule.second) + " F_sb(K = 1))",
+                    run(K, 1273.15, 10000, "smooth", 0, "exact", rule.first)
+                        .force/(std::pow(K, rule.second)*F1),
+                    1, 1e-3
+                );
+            }
+        }
+    }
+
+    // No bridges with the walls: none on a wall, the pairs' unchanged
+    check
+    (
+        "F_sb, particle on a wall with wallBridges no [N]",
+        wallRun(1273.15, 1273.15, 10000, "wall", "wallBridges no;"), 0, 0
+    );
+    check
+    (
+        "F_sb, pair with wallBridges no [N]",
+        run(1, 1273.15, 10000, "smooth", 0, "exact", "wallBridges no;").force,
+        reference(1, 1273.15, 0.01, 1), 1e-3
+    );
 
     // Reduced surfaces: the share f_i f_j of iron-iron micro-contacts
     {

@@ -39,6 +39,32 @@ Foam::cohesionModels::solidBridge::neckIntegrationModelNames
 });
 
 
+const Foam::Enum
+<
+    Foam::cohesionModels::solidBridge::coarseGrainingRule
+>
+Foam::cohesionModels::solidBridge::coarseGrainingRuleNames
+({
+    { coarseGrainingRule::contactTime, "contactTime" },
+    { coarseGrainingRule::stress, "stress" },
+    { coarseGrainingRule::bondNumber, "bondNumber" },
+});
+
+
+Foam::scalar Foam::cohesionModels::solidBridge::forceExponent
+(
+    const coarseGrainingRule rule
+)
+{
+    switch (rule)
+    {
+        case coarseGrainingRule::stress: return 2;
+        case coarseGrainingRule::bondNumber: return 3;
+        default: return 12.0/7.0;
+    }
+}
+
+
 namespace
 {
 
@@ -69,7 +95,7 @@ void checkKeywords(const Foam::dictionary& coeffs)
         coeffs,
         {
             "C", "curvatureRadius", "activationTime", "wallTemperature",
-            "neckIntegration"
+            "neckIntegration", "coarseGraining", "wallBridges"
         }
     );
 }
@@ -97,6 +123,32 @@ EnumType readChoice
             << Foam::exit(Foam::FatalIOError);
     }
     return names[name];
+}
+
+//- A yes/no keyword (its default if absent); fatal, listing the valid
+//  words, if it is not one
+bool readSwitch
+(
+    const Foam::dictionary& coeffs,
+    const Foam::word& key,
+    const bool deflt
+)
+{
+    if (!coeffs.found(key))
+    {
+        return deflt;
+    }
+    const Foam::word name(coeffs.get<Foam::word>(key));
+    const Foam::Switch sw(name, true);
+    if (!sw.valid())
+    {
+        FatalIOErrorInKeyword(coeffs, key)
+            << "Unknown " << key << " " << name << " in " << coeffs.name()
+            << Foam::nl << "Valid " << key << " values are"
+            << " (yes no true false on off)"
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return bool(sw);
 }
 
 } // End anonymous namespace
@@ -141,7 +193,16 @@ Foam::cohesionModels::solidBridge::solidBridge
     law_(material_, coeffs_),
     activationTime_(coeffs_.lookupOrDefault<scalar>("activationTime", 0)),
     K_(coarseGrainFactor),
-    forceScale_(std::pow(K_, 12.0/7.0)),
+    coarseGraining_
+    (
+        readChoice
+        (
+            coeffs_, "coarseGraining", coarseGrainingRuleNames,
+            coarseGrainingRule::contactTime
+        )
+    ),
+    forceScale_(std::pow(K_, forceExponent(coarseGraining_))),
+    wallBridges_(readSwitch(coeffs_, "wallBridges", true)),
     cPair_(timeCorrection(law.particleMaterial(), law.particleMaterial())),
     cWall_(law.materials().nWalls()),
     wallTemperature_
@@ -191,8 +252,11 @@ Foam::cohesionModels::solidBridge::solidBridge
     Info<< "    solid bridges: C " << law_.C() << ", activation at "
         << activationTime_ << " s, contact-time correction c = " << cPair_
         << " (pairs), " << cWall_ << " (walls: "
-        << law.materials().wallNames() << "), force scale K^(12/7) = "
-        << forceScale_ << ", wall contacts at the "
+        << law.materials().wallNames() << "), coarse graining "
+        << coarseGrainingRuleNames[coarseGraining_] << ": force scale K^"
+        << forceExponent(coarseGraining_) << " = " << forceScale_
+        << ", wall bridges " << (wallBridges_ ? "yes" : "no")
+        << ", wall contacts at the "
         << wallTemperatureModelNames[wallTemperature_] << "'s temperature"
         << ", neck integration "
         << neckIntegrationModelNames[neckIntegration_] << endl;
