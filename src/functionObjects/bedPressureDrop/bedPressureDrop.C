@@ -281,24 +281,26 @@ bool Foam::functionObjects::bedPressureDrop::execute()
     const scalar stdRatio = WbyA > 0 ? stdDev/WbyA : 0;
     const bool collapsed = still && ratio < ratioBelow_;
 
-    const string over
-    (
-        " s: over the last " + Foam::name(window_) + " s dp_mean/(W/A) = "
-      + Foam::name(ratio) + ", dp_std/(W/A) = " + Foam::name(stdRatio)
-    );
+    // The window's figures, for the log when a flag changes
+    const auto over = [&]()
+    {
+        return
+            " s: over the last " + Foam::name(window_) + " s dp_mean/(W/A) = "
+          + Foam::name(ratio) + ", dp_std/(W/A) = " + Foam::name(stdRatio);
+    };
     if (update(defluidized_, collapsed, t, dt))
     {
         if (defluidized_.flag)
         {
             Info<< type() << ' ' << name() << ": the bed defluidized at t = "
-                << t << over.c_str() << " (< " << ratioBelow_ << " and < "
+                << t << over().c_str() << " (< " << ratioBelow_ << " and < "
                 << stdBelow_ << " since t = " << defluidized_.since << " s)"
                 << endl;
         }
         else
         {
             Info<< type() << ' ' << name() << ": the bed is no longer"
-                << " defluidized at t = " << t << over.c_str() << endl;
+                << " defluidized at t = " << t << over().c_str() << endl;
         }
     }
     if (update(frozen_, still && !collapsed, t, dt))
@@ -306,14 +308,14 @@ bool Foam::functionObjects::bedPressureDrop::execute()
         if (frozen_.flag)
         {
             Info<< type() << ' ' << name() << ": the bed froze at t = "
-                << t << over.c_str() << " (>= " << ratioBelow_ << ": the gas"
+                << t << over().c_str() << " (>= " << ratioBelow_ << ": the gas"
                 << " carries it; < " << stdBelow_ << ": it does not bubble;"
                 << " since t = " << frozen_.since << " s)" << endl;
         }
         else
         {
             Info<< type() << ' ' << name() << ": the bed is no longer"
-                << " frozen at t = " << t << over.c_str() << endl;
+                << " frozen at t = " << t << over().c_str() << endl;
         }
     }
 
