@@ -13,6 +13,17 @@
         still with dp_mean/(W/A) >= RATIO; a flag is up once every step
         for DURATION seconds has looked so. The flag of STATE
         (defluidized or frozen) must trip, once; the other never.
+    check.py balance DAT WALLDAT TOL
+        the vertical momentum balance of the still bed, with wallLoad's
+        file WALLDAT (gravity along -z): each patch's share of the weight
+        recomputed as -F_z/W and the sum of the shares as the sum of the
+        columns, within 1e-9 (1 + |share|) (the file's 11 digits); over
+        the rows where either flag is up (the bed at rest; at least one),
+        the mean of dp/(W/A) + sum of the shares is 1 within TOL (what the
+        gas does not carry, the distributor and walls do) and every row
+        within 4 TOL (a row is one CFD step: a packed bed that still
+        creeps accelerates for a step now and then, and the balance
+        leaves out the bed's acceleration).
     check.py restart FULLDAT RESTARTDAT
         every row of the restarted run equal to the uninterrupted run's: dp and dp_mean within 1e-9 relative, dp_std
         within 1e-7 dp_mean, both flags the same.
@@ -113,10 +124,46 @@ def restart(full_path, restart_path):
     return n > 0 and bad == 0
 
 
+def balance(path, wall_path, tol):
+    d = load(path)
+    w = load(wall_path)
+    if len(w) != len(d) or np.any(np.abs(w[:, 0] - d[:, 0]) > 1e-12):
+        print(f'FAIL: {wall_path} and {path} have other times')
+        return False
+    weight, shares = w[:, 1], w[:, 5:-1:4]
+    fz = w[:, 4:-1:4]
+    full = weight > 0
+    ok = True
+    recomputed = np.where(full[:, None], -fz/np.where(full, weight, 1)[:, None], 0)
+    worst = np.max(np.abs(recomputed - shares)/(1 + np.abs(shares)))
+    if worst > 1e-9:
+        print(f'FAIL: a share differs from -F_z/W by {worst:.3g}')
+        ok = False
+    if np.max(np.abs(shares.sum(axis=1) - w[:, -1])
+              / (1 + np.abs(shares).sum(axis=1))) > 1e-9:
+        print('FAIL: sum_s is not the sum of the shares')
+        ok = False
+    still = (d[:, 7] > 0) | (d[:, 8] > 0)
+    if not np.any(still):
+        print('FAIL: no row with a flag up')
+        return False
+    total = d[still, 3] + w[still, -1]
+    off = abs(total.mean() - 1)
+    worst = np.max(np.abs(total - 1))
+    print(f'{still.sum()} still rows: dp/(W/A) {d[still, 3].min():.4f}-'
+          f'{d[still, 3].max():.4f}, patches\' shares (mean) '
+          + ' '.join(f'{v:.4f}' for v in shares[still].mean(axis=0))
+          + f'; dp/(W/A) + sum: mean {total.mean():.5f} (tolerance {tol}),'
+          f' rows {total.min():.5f}-{total.max():.5f} (tolerance {4*tol})')
+    return ok and off <= tol and worst <= 4*tol
+
+
 def main():
     mode = sys.argv[1]
     if mode == 'window':
         ok = window(sys.argv[2], *[float(v) for v in sys.argv[3:7]], sys.argv[7])
+    elif mode == 'balance':
+        ok = balance(sys.argv[2], sys.argv[3], float(sys.argv[4]))
     elif mode == 'restart':
         ok = restart(sys.argv[2], sys.argv[3])
     else:

@@ -4,10 +4,10 @@
 #include "wallHeatFlow.H"
 #include "gasConduction.H"
 #include "volFields.H"
-#include "wallPolyPatch.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
 #include "keywordSource.H"
+#include "patchSelection.H"
 
 namespace Foam
 {
@@ -62,39 +62,7 @@ bool Foam::functionObjects::wallHeatFlow::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
-    // The patches in the order named (each name must match one), or every
-    // wall patch
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    if (dict.found("patches"))
-    {
-        DynamicList<label> ids;
-        for (const wordRe& name : dict.get<wordRes>("patches"))
-        {
-            const labelList matched
-            (
-                pbm.patchSet(wordReList(1, name), false).sortedToc()
-            );
-            if (matched.empty())
-            {
-                FatalIOErrorInKeyword(dict, "patches")
-                    << "No patch matches " << name << " of keyword patches"
-                    << nl << "Valid patches are " << pbm.names()
-                    << exit(FatalIOError);
-            }
-            for (const label patchi : matched)
-            {
-                if (!ids.found(patchi))
-                {
-                    ids.append(patchi);
-                }
-            }
-        }
-        patches_.transfer(ids);
-    }
-    else
-    {
-        patches_ = pbm.findPatchIDs<wallPolyPatch>().sortedToc();
-    }
+    patches_ = selectPatches(mesh_.boundaryMesh(), dict);
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
     hName_ = dict.lookupOrDefault<word>("h", "h");

@@ -647,8 +647,12 @@ void Foam::demEngine::computeForces(const scalar deltaT)
         M[i] = Zero;
     }
 
+    sizeWallAccumulators();
     kernel_->pairs(P, pairs_, deltaT, time_);
-    kernel_->walls(P, wallContacts_, walls_, deltaT, time_);
+    kernel_->walls
+    (
+        P, wallContacts_, walls_, deltaT, time_, wallFaceImpulse_.data()
+    );
 }
 
 
@@ -739,11 +743,25 @@ void Foam::demEngine::beginStep()
     }
     rebuildRequested_ = false;
     wallFaceHeat_ = 0;
+    wallFaceImpulse_ = Zero;
 
     vector* __restrict__ Jd = particles_.dragImpulse.data();
     for (label i = 0; i < nLocal_; ++i)
     {
         Jd[i] = Zero;
+    }
+}
+
+
+void Foam::demEngine::sizeWallAccumulators()
+{
+    if (wallFaceHeat_.size() != walls_.size())
+    {
+        wallFaceHeat_.setSize(walls_.size(), scalar(0));
+    }
+    if (wallFaceImpulse_.size() != walls_.size())
+    {
+        wallFaceImpulse_.setSize(walls_.size(), Zero);
     }
 }
 
@@ -775,10 +793,7 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 
     demParticles& P = particles_;
     const label nL = nLocal();
-    if (wallFaceHeat_.size() != walls_.size())
-    {
-        wallFaceHeat_.setSize(walls_.size(), scalar(0));
-    }
+    sizeWallAccumulators();
 
     for (label s = 0; s < nSteps; ++s)
     {
@@ -813,7 +828,10 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
 
         time_ += deltaT;
         kernel_->pairs(P, pairs_, deltaT, time_);
-        kernel_->walls(P, wallContacts_, walls_, deltaT, time_);
+        kernel_->walls
+        (
+            P, wallContacts_, walls_, deltaT, time_, wallFaceImpulse_.data()
+        );
 
         if (conduction_.active())
         {

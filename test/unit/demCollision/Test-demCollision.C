@@ -25,7 +25,9 @@ Description
     -case settledBed  384 spheres (r 0.9-1.0 x 0.5 mm) dropped in a box
         settle for 0.5 s under gravity; the floor's normal force equals the
         bed's weight within 0.5 % (frictionless walls, particle friction
-        0.5, e = 0.5).
+        0.5, e = 0.5); so does the floor's load from the impulses the
+        engine gives each wall face over 100 more steps (0.5 %), and the
+        side faces carry nothing along z (1e-12 of the weight).
 
     -case persistentState  lists persist across steps; a copy with its
         contact records continues bit-identically, a reordered one to
@@ -430,6 +432,24 @@ void caseSettledBed()
         << "kinetic energy " << kinetic << " J after " << nSteps
         << " steps (" << dem.nBuilds() << " list builds)" << nl;
     check("settled bed floor force vs weight", floorForce, weight, 0.005);
+
+    // The walls' own account over 100 more steps: the impulse the contacts
+    // gave each face over the time is the load on it; the floor (face 0)
+    // carries the weight downwards, the frictionless side faces nothing
+    // along z
+    const label nMore = 100;
+    dem.beginStep();
+    dem.advance(dt, nMore);
+    const List<vector>& J = dem.wallFaceImpulse();
+    scalar sideLoad = 0;
+    for (label f = 1; f < J.size(); ++f)
+    {
+        sideLoad += mag(J[f].z())/(nMore*dt);
+    }
+    check("floor load from the wall impulses vs weight",
+        -J[0].z()/(nMore*dt), weight, 0.005);
+    check("side faces' vertical load vs weight (frictionless: 0)",
+        sideLoad/weight, 0, 1e-12);
 }
 
 

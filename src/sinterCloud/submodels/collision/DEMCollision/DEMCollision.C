@@ -456,17 +456,11 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
 
 
 template<class CloudType>
-Foam::scalar Foam::DEMCollision<CloudType>::conductedWallHeat
+Foam::labelRange Foam::DEMCollision<CloudType>::wallFaces
 (
     const label patchi
 ) const
 {
-    const scalarList& faceHeat = engine_.wallFaceHeat();
-    if (faceHeat.empty())
-    {
-        return 0;
-    }
-
     // The engine's wall faces are the patches' faces in wallPatches_ order
     const polyBoundaryMesh& patches = owner_.mesh().boundaryMesh();
     label start = 0;
@@ -475,14 +469,47 @@ Foam::scalar Foam::DEMCollision<CloudType>::conductedWallHeat
         const label n = patches[wallPatchi].size();
         if (wallPatchi == patchi)
         {
-            scalar heat = 0;
-            for (label f = start; f < start + n; ++f)
-            {
-                heat += faceHeat[f];
-            }
-            return heat;
+            return labelRange(start, n);
         }
         start += n;
     }
-    return 0;
+    return labelRange(start, 0);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::DEMCollision<CloudType>::conductedWallHeat
+(
+    const label patchi
+) const
+{
+    const scalarList& faceHeat = engine_.wallFaceHeat();
+    scalar heat = 0;
+    if (faceHeat.size())
+    {
+        for (const label f : wallFaces(patchi))
+        {
+            heat += faceHeat[f];
+        }
+    }
+    return heat;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::DEMCollision<CloudType>::wallImpulse
+(
+    const label patchi
+) const
+{
+    const List<vector>& faceImpulse = engine_.wallFaceImpulse();
+    vector impulse(Zero);
+    if (faceImpulse.size())
+    {
+        for (const label f : wallFaces(patchi))
+        {
+            impulse += faceImpulse[f];
+        }
+    }
+    return impulse;
 }
