@@ -376,8 +376,15 @@ Foam::DEMCloud<CloudType>::oxygenSource() const
     );
     if (reduction_.valid())
     {
+        // Spread over the smoothing length as the heat and momentum
+        // sources are (the distribution D of eq 4.7): per volume and time,
+        // then smoothed; the smoothing keeps the sum over the cells
         tS.ref().field() =
-            oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue());
+            DEMCloudDetail::smoother(mesh).smooth<scalar>
+            (
+                oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue()),
+                "cloudOxygen"
+            );
     }
     return tS;
 }
