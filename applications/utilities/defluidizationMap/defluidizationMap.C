@@ -83,18 +83,6 @@ namespace
 
 const scalar degC = 273.15;
 
-scalar positive(const dictionary& dict, const word& key)
-{
-    const scalar value(dict.get<scalar>(key));
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << value << " must be > 0" << exit(FatalIOError);
-    }
-    return value;
-}
-
-
 // One powder: identical spheres of the powder's d50
 struct powder
 {
@@ -229,32 +217,33 @@ int main(int argc, char *argv[])
         }
     }
 
-    const scalar Tmin(positive(mapDict, "Tmin"));
-    const scalar Tmax(positive(mapDict, "Tmax"));
-    if (Tmax <= Tmin)
-    {
-        FatalIOErrorInFunction(mapDict)
-            << "Tmax " << Tmax << " must be above Tmin " << Tmin
-            << exit(FatalIOError);
-    }
-    const label nT(mapDict.get<label>("nTemperatures"));
-    if (nT < 2)
-    {
-        FatalIOErrorInFunction(mapDict)
-            << "nTemperatures " << nT << " must be >= 2" << exit(FatalIOError);
-    }
-    const scalar g(positive(mapDict, "gravity"));
+    const scalar Tmin(keywordRange::positive(mapDict, "Tmin", "[K]"));
+    const scalar Tmax
+    (
+        keywordRange::above<scalar>
+        (
+            mapDict, "Tmax", Tmin, false, "above Tmin [K]"
+        )
+    );
+    const label nT
+    (
+        keywordRange::above<label>(mapDict, "nTemperatures", 2, true)
+    );
+    const scalar g(keywordRange::positive(mapDict, "gravity", "[m/s^2]"));
 
     const dictionary& gasDict = mapDict.subDict("gas");
-    const scalar muGas(positive(gasDict, "viscosity"));
-    const scalar rhoGas(positive(gasDict, "density"));
-    const scalar epsGas(positive(gasDict, "voidage"));
-    if (epsGas >= 1)
-    {
-        FatalIOErrorInFunction(gasDict)
-            << "voidage " << epsGas << " must lie in (0, 1)"
-            << exit(FatalIOError);
-    }
+    const scalar muGas
+    (
+        keywordRange::positive(gasDict, "viscosity", "dynamic [Pa s]")
+    );
+    const scalar rhoGas
+    (
+        keywordRange::positive(gasDict, "density", "[kg/m^3]")
+    );
+    const scalar epsGas
+    (
+        keywordRange::get(gasDict, "voidage", 0, 1, "[-]", true, true)
+    );
 
     // Powders
     const dictionary& powdersDict = mapDict.subDict("powders");
@@ -271,7 +260,7 @@ int main(int argc, char *argv[])
         powder p;
         p.name = e.keyword();
         p.ironContent = 0;
-        p.d = positive(pd, "d50");
+        p.d = keywordRange::positive(pd, "d50", "[m]");
         p.m = material.rho()*constant::mathematical::pi/6*pow3(p.d);
         p.uSuperficial = pd.get<scalarList>("superficialVelocities");
         if (p.uSuperficial.empty() || min(p.uSuperficial) <= 0)
@@ -303,8 +292,8 @@ int main(int argc, char *argv[])
     {
         const dictionary& cal = mapDict.subDict("calibration");
         const word which(cal.get<word>("powder"));
-        const scalar Tt(positive(cal, "Tt"));
-        const scalar Td(positive(cal, "Td"));
+        const scalar Tt(keywordRange::positive(cal, "Tt", "[K]"));
+        const scalar Td(keywordRange::positive(cal, "Td", "[K]"));
         if (!(Tt >= 200 && Td > Tt))
         {
             // T_t above T_d gave a tensile strength falling with T
@@ -337,7 +326,10 @@ int main(int argc, char *argv[])
            /bridge.forcePerStrength(p.d/2, Td, hertz.contactTime(vn.last()));
 
         // sigma(T) = a + b T^n through both points
-        const scalar n(positive(cal, "exponent"));
+        const scalar n
+        (
+            keywordRange::positive(cal, "exponent", "of sigma(T) [-]")
+        );
         const scalar b = (sigmaD - sigmaT)/(Foam::pow(Td, n) - Foam::pow(Tt, n));
         const scalar a = sigmaT - b*Foam::pow(Tt, n);
 

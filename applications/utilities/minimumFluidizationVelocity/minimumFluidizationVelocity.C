@@ -70,6 +70,7 @@ Usage
     Output: a table, and one line `umf <law> <value>` per law.
 */
 
+#include "keywordRange.H"
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
@@ -90,18 +91,6 @@ struct sizeClasses
     scalarField x;
     scalar d50;
 };
-
-
-scalar positive(const dictionary& dict, const word& key)
-{
-    const scalar value = dict.get<scalar>(key);
-    if (!(value > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << ' ' << value << " must be > 0" << exit(FatalIOError);
-    }
-    return value;
-}
 
 
 //- A particle diameter [m] of a fluidized bed: in [0.1 um, 5 cm]
@@ -134,7 +123,8 @@ sizeClasses readSizeDistribution(const dictionary& dict)
     if (type == "normal")
     {
         const scalar mean = size(dict, "mean");
-        const scalar sigma = positive(dict, "standardDeviation");
+        const scalar sigma =
+            keywordRange::positive(dict, "standardDeviation", "[m]");
         const scalar dMin = size(dict, "min");
         const scalar dMax = size(dict, "max");
         const label n = dict.lookupOrDefault<label>("nClasses", 400);
@@ -345,9 +335,10 @@ int main(int argc, char *argv[])
     );
 
     const dictionary& gas = dict.subDict("gas");
-    const scalar rhoGas = positive(gas, "rho");
-    const scalar mu = positive(gas, "mu");
-    const scalar rhoP = positive(dict.subDict("particles"), "rho");
+    const scalar rhoGas = keywordRange::positive(gas, "rho", "[kg/m^3]");
+    const scalar mu = keywordRange::positive(gas, "mu", "dynamic [Pa s]");
+    const scalar rhoP =
+        keywordRange::positive(dict.subDict("particles"), "rho", "[kg/m^3]");
     const scalar g = dict.lookupOrDefault<scalar>("g", 9.81);
     const scalar eps =
         args.found("epsilonMf")

@@ -6,7 +6,7 @@
 #include "gravityMeshObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
-#include "boundedKeyword.H"
+#include "keywordRange.H"
 #include "keywordSource.H"
 
 namespace Foam
@@ -90,7 +90,15 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
     requireSinterCloud(mesh_, dict);
     voidageName_ = dict.lookupOrDefault<word>("voidage", "voidage");
 
-    window_ = boundedKeyword<scalar>(dict, "window", 0.2, 0, false);
+    window_ = keywordRange::aboveOrDefault<scalar>
+    (
+        dict,
+        "window",
+        0.2,
+        0,
+        false,
+        "the averaging window [s]"
+    );
     if (dict.found("defluidization") && !dict.isDict("defluidization"))
     {
         FatalIOErrorInFunction(dict)
@@ -99,9 +107,33 @@ bool Foam::functionObjects::bedPressureDrop::read(const dictionary& dict)
             << exit(FatalIOError);
     }
     const dictionary crit(dict.subOrEmptyDict("defluidization"));
-    ratioBelow_ = boundedKeyword<scalar>(crit, "ratioBelow", 0.8, 0, false);
-    stdBelow_ = boundedKeyword<scalar>(crit, "stdBelow", 0.02, 0, false);
-    duration_ = boundedKeyword<scalar>(crit, "duration", window_, 0, true);
+    ratioBelow_ = keywordRange::aboveOrDefault<scalar>
+    (
+        crit,
+        "ratioBelow",
+        0.8,
+        0,
+        false,
+        "dp/(W/A) below which a still bed has collapsed [-]"
+    );
+    stdBelow_ = keywordRange::aboveOrDefault<scalar>
+    (
+        crit,
+        "stdBelow",
+        0.02,
+        0,
+        false,
+        "the STD of dp/(W/A) below which the bed is still [-]"
+    );
+    duration_ = keywordRange::aboveOrDefault<scalar>
+    (
+        crit,
+        "duration",
+        window_,
+        0,
+        true,
+        "how long the criteria must hold [s]"
+    );
 
     return true;
 }

@@ -4,7 +4,7 @@
 #include "particleStatistics.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
-#include "boundedKeyword.H"
+#include "keywordRange.H"
 #include "volFields.H"
 #include "OFstream.H"
 #include "gravityMeshObject.H"
@@ -72,13 +72,53 @@ bool Foam::functionObjects::particleStatistics::read(const dictionary& dict)
     }
 
     const dictionary speed(dict.subOrEmptyDict("speedDistribution"));
-    speedMax_ = boundedKeyword<scalar>(speed, "max", 1, 0, false);
-    speedBins_ = boundedKeyword<label>(speed, "bins", 50, 1, true);
+    speedMax_ = keywordRange::aboveOrDefault<scalar>
+    (
+        speed,
+        "max",
+        1,
+        0,
+        false,
+        "the top of the speed bins [m/s]"
+    );
+    speedBins_ = keywordRange::aboveOrDefault<label>
+    (
+        speed,
+        "bins",
+        50,
+        1,
+        true,
+        "the number of bins"
+    );
 
     const dictionary T(dict.subOrEmptyDict("temperatureDistribution"));
-    Tmin_ = boundedKeyword<scalar>(T, "min", 273.15, 0, false);
-    Tmax_ = boundedKeyword<scalar>(T, "max", 1473.15, Tmin_, false);
-    Tbins_ = boundedKeyword<label>(T, "bins", 120, 1, true);
+    Tmin_ = keywordRange::aboveOrDefault<scalar>
+    (
+        T,
+        "min",
+        273.15,
+        0,
+        false,
+        "the lowest temperature bin [K]"
+    );
+    Tmax_ = keywordRange::aboveOrDefault<scalar>
+    (
+        T,
+        "max",
+        1473.15,
+        Tmin_,
+        false,
+        "the top temperature bin [K]"
+    );
+    Tbins_ = keywordRange::aboveOrDefault<label>
+    (
+        T,
+        "bins",
+        120,
+        1,
+        true,
+        "the number of bins"
+    );
 
     return true;
 }

@@ -4,7 +4,7 @@
 #include "solidsFlux.H"
 #include "addToRunTimeSelectionTable.H"
 #include "findSinterCloud.H"
-#include "boundedKeyword.H"
+#include "keywordRange.H"
 #include "gravityMeshObject.H"
 #include "OFstream.H"
 #include "mathematicalConstants.H"
@@ -120,8 +120,23 @@ bool Foam::functionObjects::solidsFlux::read(const dictionary& dict)
     cloudName_ = dict.lookupOrDefault<word>("cloud", "cloud");
     requireSinterCloud(mesh_, dict);
     height_ = dict.get<scalar>("height");
-    thickness_ = boundedKeyword<scalar>(dict, "thickness", 0, false);
-    nBins_ = boundedKeyword<label>(dict, "bins", 20, 1, true);
+    thickness_ = keywordRange::above<scalar>
+    (
+        dict,
+        "thickness",
+        0,
+        false,
+        "the slab thickness [m]"
+    );
+    nBins_ = keywordRange::aboveOrDefault<label>
+    (
+        dict,
+        "bins",
+        20,
+        1,
+        true,
+        "the number of bins"
+    );
     averageFrom_ = dict.lookupOrDefault<scalar>("averageFrom", 0);
 
     const vector g = meshObjects::gravity::New(mesh_.time()).value();

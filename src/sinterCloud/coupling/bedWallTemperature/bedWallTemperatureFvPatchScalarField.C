@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "bedWallTemperatureFvPatchScalarField.H"
+#include "keywordRange.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 #include "basicThermo.H"
@@ -55,7 +56,7 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
             << dict.name() << " needs the particles' conductivity"
             << exit(FatalIOError);
     }
-    ks_ = contactMaterials::positive(material, "thermalConductivity");
+    ks_ = keywordRange::positive(material, "thermalConductivity", "[W/(m K)]");
 }
 
 

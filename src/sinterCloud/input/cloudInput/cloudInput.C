@@ -102,15 +102,17 @@ void Foam::cloudInput::checkSizeDistribution
     const word type(sizeDict.get<word>("type"));
     const dictionary& coeffs = sizeDict.optionalSubDict(type + "Distribution");
 
+    // An optional size, > 0 (0 without it)
     auto positive = [&](const word& key)
     {
         scalar v = 0;
-        if (coeffs.readIfPresent(key, v) && !(v > 0))
+        if (coeffs.readIfPresent(key, v))
         {
-            FatalIOErrorInKeyword(coeffs, key)
-                << "Size " << key << ' ' << sizes(v, K).c_str() << " in "
-                << coeffs.name() << " must be > 0 (sizes in metres)"
-                << exit(FatalIOError);
+            keywordRange::check
+            (
+                coeffs, key, v, 0, GREAT,
+                "size " + sizes(v, K) + " (sizes in metres)", true
+            );
         }
         return v;
     };

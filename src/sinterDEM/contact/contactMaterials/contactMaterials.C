@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactMaterials.H"
+#include "keywordRange.H"
 #include "knownKeywords.H"
 #include "sinterMaterial.H"
 #include "DynamicList.H"
@@ -198,7 +199,12 @@ Foam::label Foam::contactMaterials::wallMaterial(const word& patchName) const
 
 Foam::scalar Foam::contactMaterials::particleHeatCapacity() const
 {
-    return heatCapacityScale_*positive(particleDict(), "specificHeat");
+    return
+        heatCapacityScale_
+       *keywordRange::positive
+        (
+            particleDict(), "specificHeat", "specific heat [J/(kg K)]"
+        );
 }
 
 
@@ -268,23 +274,6 @@ Foam::dictionary Foam::contactMaterials::read(const objectRegistry& db)
             false
         )
     );
-}
-
-
-Foam::scalar Foam::contactMaterials::positive
-(
-    const dictionary& dict,
-    const word& key
-)
-{
-    const scalar value = dict.get<scalar>(key);
-    if (!(value > 0))
-    {
-        FatalIOErrorInKeyword(dict, key)
-            << "Keyword " << key << " in " << dict.name()
-            << " must be positive, not " << value << exit(FatalIOError);
-    }
-    return value;
 }
 
 

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactConduction.H"
+#include "keywordRange.H"
 #include "conductionGeometry.H"
 
 namespace
@@ -56,9 +57,9 @@ Foam::scalar particleConductivity
         return 0;
     }
     return
-        contactMaterials::positive
+        keywordRange::positive
         (
-            materials.particleDict(), "thermalConductivity"
+            materials.particleDict(), "thermalConductivity", "[W/(m K)]"
         );
 }
 
@@ -96,7 +97,8 @@ Foam::contactConduction::contactConduction
 
     const dictionary& pDict = materials.particleDict();
     cp_ = materials.particleHeatCapacity();
-    const scalar kP = contactMaterials::positive(pDict, "thermalConductivity");
+    const scalar kP =
+        keywordRange::positive(pDict, "thermalConductivity", "[W/(m K)]");
 
     // g = G/R_c of the direct law for each pair of materials
     gPP_ = direct_->conductance(kP, kP, 1);
@@ -110,7 +112,8 @@ Foam::contactConduction::contactConduction
     {
         const dictionary& wDict =
             materials.dict().subDict(materials.wallNames()[m]);
-        const scalar kW = contactMaterials::positive(wDict, "thermalConductivity");
+        const scalar kW =
+            keywordRange::positive(wDict, "thermalConductivity", "[W/(m K)]");
         gPW_[m] = direct_->conductance(kP, kW, 1);
         const contactMaterial& w = materials.wall(m);
         cPW_[m] =
