@@ -61,11 +61,7 @@ Foam::DEMCloud<CloudType>::DEMCloud
     CloudType(cloudName, rho, U, g, thermo, false),
     massChecked_(false),
     placedBed_(false),
-    convection_(nullptr),
-    hydrogenMoleFraction_(0),
-    hydrogenTransported_(false),
-    hydrogenDiffusivity_(0),
-    oxygenRemoved_(this->mesh().nCells(), Zero)
+    convection_(nullptr)
 {
     if (this->solution().active())
     {
@@ -171,7 +167,17 @@ Foam::DEMCloud<CloudType>::DEMCloud
         );
 
         // The engine exists: the particles' material is known
-        readReduction();
+        chemistry_.reset
+        (
+            new parcelChemistry
+            (
+                this->mesh(),
+                this->particleProperties(),
+                this->constProps().dict(),
+                this->constProps().reductionDegree0(),
+                collision_->engine().materials()
+            )
+        );
 
         // The engine exists: the contact fields can be read
         if (readFields)
@@ -227,267 +233,33 @@ Foam::DEMCloud<CloudType>::DEMCloud
 
 
 template<class CloudType>
-const Foam::ironOxidePath& Foam::DEMCloud<CloudType>::reducedPath() const
-{
-    if (!path_.valid())
-    {
-        FatalIOErrorInFunction(this->constProps().dict())
-            << "Keyword reductionDegree0 "
-            << this->constProps().reductionDegree0() << " in "
-            << this->constProps().dict().name() << " starts the particles"
-            << " reduced, which needs their iron content: give ironContent"
-            << " (W0(TFe)) in the particles' material "
-            << collision_->engine().materials().particleDict().name()
-            << exit(FatalIOError);
-    }
-    return path_();
-}
-
-
-template<class CloudType>
-void Foam::DEMCloud<CloudType>::readReduction()
-{
-    const contactMaterials& materials = collision_->engine().materials();
-    const dictionary& particle = materials.particleDict();
-    if (particle.found("ironContent"))
-    {
-        path_.reset(new ironOxidePath(particle));
-    }
-    if (materials.reducedSurfaceDict())
-    {
-        if (!path_.valid())
-        {
-            FatalIOErrorInFunction(particle)
-                << "The materials name a reducedSurface (the iron on"
-                << " reduced particle surfaces), so the particles' material "
-                << particle.name() << " needs its ironContent, W0(TFe):"
-                << " the surface iron of a particle follows from its"
-                << " reduction degree and W0" << exit(FatalIOError);
-        }
-        surfaceIron_.reset(new surfaceIron(particle));
-        Info<< "    surface iron of the particles from their reduction"
-            << " degree: iron content W0 "
-            << surfaceIron_->path().ironContent() << ", surface enrichment"
-            << " exponent " << surfaceIron_->exponent() << endl;
-    }
-    else if (particle.found("surfaceIronExponent"))
-    {
-        WarningInFunction
-            << "Keyword surfaceIronExponent of " << particle.name()
-            << " is not used: the materials name no reducedSurface (the"
-            << " iron of reduced surfaces), so the bridges are the"
-            << " particles' material's alone" << endl;
-    }
-    if (this->constProps().reductionDegree0() > 0)
-    {
-        // Fatal here, not at the first injection, without ironContent
-        reducedPath();
-    }
-
-    const dictionary* dictPtr =
-        this->particleProperties().subDictPtr("reduction");
-    if (!dictPtr)
-    {
-        return;
-    }
-    const dictionary& dict = *dictPtr;
-
-    reduction_.reset
-    (
-        new parcelReduction
-        (
-            dict,
-            collision_->engine().materials().particleDict(),
-            wordList({"gas", "hydrogenMoleFraction", "diffusivity"})
-        )
-    );
-
-    const word gas(dict.get<word>("gas"));
-    if (gas == "uniform")
-    {
-        hydrogenMoleFraction_ = keywordRange::get
-        (
-            dict, "hydrogenMoleFraction", 0, 1,
-            "the hydrogen mole fraction of the gas"
-        );
-    }
-    else if (gas == "transported")
-    {
-        hydrogenTransported_ = true;
-        if (dict.found("hydrogenMoleFraction"))
-        {
-            FatalIOErrorInKeyword(dict, "hydrogenMoleFraction")
-                << "Keyword hydrogenMoleFraction in " << dict.name()
-                << " is not read with gas transported: the hydrogen"
-                << " fraction comes from the gas's fields Y_H2 and Y_H2O"
-                << exit(FatalIOError);
-        }
-        hydrogenDiffusivity_ = keywordRange::get
-        (
-            dict, "diffusivity", 0, 1,
-            "the diffusivity of H2 and H2O in the gas [m^2/s]", true, true
-        );
-    }
-    else
-    {
-        FatalIOErrorInKeyword(dict, "gas")
-            << "Unknown gas " << gas << " in " << dict.name() << nl
-            << "Valid gas compositions are (uniform transported)"
-            << exit(FatalIOError);
-    }
-
-    Info<< "    hydrogen reduction: " << reduction_->law().type()
-        << ", iron content W0 " << reduction_->path().ironContent()
-        << ", gas " << gas;
-    if (hydrogenTransported_)
-    {
-        Info<< " (Y_H2, Y_H2O, diffusivity " << hydrogenDiffusivity_
-            << " m^2/s)";
-    }
-    else
-    {
-        Info<< " with H2 mole fraction " << hydrogenMoleFraction_;
-    }
-    Info<< ", chemistry acceleration " << reduction_->acceleration() << endl;
-}
-
-
-template<class CloudType>
 Foam::tmp<Foam::volScalarField::Internal>
 Foam::DEMCloud<CloudType>::oxygenSource() const
 {
-    const fvMesh& mesh = this->mesh();
-    tmp<volScalarField::Internal> tS
+    if (chemistry_.valid())
+    {
+        return chemistry_->oxygenSource
+        (
+            this->mesh(), this->name() + ":oxygenSource"
+        );
+    }
+    return tmp<volScalarField::Internal>
     (
         new volScalarField::Internal
         (
             IOobject
             (
                 this->name() + ":oxygenSource",
-                mesh.time().timeName(),
-                mesh,
+                this->mesh().time().timeName(),
+                this->mesh(),
                 IOobject::NO_READ,
                 IOobject::NO_WRITE,
                 false
             ),
-            mesh,
+            this->mesh(),
             dimensionedScalar(dimMoles/dimVolume/dimTime, Zero)
         )
     );
-    if (reduction_.valid())
-    {
-        // Spread over the smoothing length as the heat and momentum
-        // sources are (the distribution D of eq 4.7): per volume and time,
-        // then smoothed; the smoothing keeps the sum over the cells
-        tS.ref().field() =
-            DEMCloudDetail::smoother(mesh).smooth<scalar>
-            (
-                oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue()),
-                "cloudOxygen"
-            );
-    }
-    return tS;
-}
-
-
-template<class CloudType>
-template<class TrackCloudType>
-void Foam::DEMCloud<CloudType>::reduce(TrackCloudType& cloud)
-{
-    const scalar dt = this->db().time().deltaTValue();
-    demParticles& P = collision_->engine().particles();
-
-    // The hydrogen mole fraction of each cell's gas: H2 and H2O in a
-    // carrier of the gas's molar mass (thermophysicalProperties)
-    scalarField yH2;
-    if (hydrogenTransported_)
-    {
-        const fvMesh& mesh = this->mesh();
-        const scalarField& Y1 =
-            mesh.lookupObject<volScalarField>("Y_H2").primitiveField();
-        const scalarField& Y2 =
-            mesh.lookupObject<volScalarField>("Y_H2O").primitiveField();
-        const scalarField W
-        (
-            1e-3*this->thermo().thermo().W()().primitiveField()
-        );
-        const scalar M1 = ironOxidePath::MH2, M2 = ironOxidePath::MH2O;
-        const scalarField n1(max(Y1, scalar(0))/M1);
-        yH2 =
-            n1
-           /max
-            (
-                n1 + max(Y2, scalar(0))/M2 + max(1 - Y1 - Y2, scalar(0))/W,
-                VSMALL
-            );
-    }
-    oxygenRemoved_ = 0;
-
-    scalar oxygen = 0, heat = 0, sumX = 0;
-    scalar minX = GREAT, maxX = -GREAT;
-    for (parcelType& p : cloud)
-    {
-        const scalar m = p.mass();
-        const parcelReduction::step s = reduction_->advance
-        (
-            p.reductionDegree(), p.T(), m,
-            hydrogenTransported_ ? yH2[p.cell()] : hydrogenMoleFraction_,
-            dt
-        );
-        oxygenRemoved_[p.cell()] += p.nParticle()*s.oxygen;
-        p.reductionDegree() = s.X;
-        p.rho() *= s.mass/m;
-        p.T() -= s.heat/(s.mass*p.Cp());
-        P.setSphere(p.demIndex(), 0.5*p.d(), p.rho());
-
-        oxygen += p.nParticle()*s.oxygen;
-        heat += p.nParticle()*s.heat;
-        sumX += s.X;
-        minX = min(minX, s.X);
-        maxX = max(maxX, s.X);
-    }
-
-    // A particle's ghosts on other processors carry its mass from the last
-    // rebuild of the lists: a rebuild in the step sends the new masses. It
-    // is asked for serially as well, so that a run takes the same steps on
-    // any number of processors
-    collision_->engine().invalidateLists();
-
-    const label n = returnReduce(this->size(), sumOp<label>());
-    Foam::reduce(oxygen, sumOp<scalar>());
-    Foam::reduce(heat, sumOp<scalar>());
-    Foam::reduce(sumX, sumOp<scalar>());
-    Foam::reduce(minX, minOp<scalar>());
-    Foam::reduce(maxX, maxOp<scalar>());
-    if (n)
-    {
-        Info<< "    Reduction: X mean " << sumX/n << " (" << minX << " to "
-            << maxX << "), oxygen removed " << oxygen << " mol, reaction"
-            << " heat " << heat << " J" << endl;
-    }
-}
-
-
-template<class CloudType>
-template<class TrackCloudType>
-void Foam::DEMCloud<CloudType>::updateSurfaceIron(TrackCloudType& cloud)
-{
-    demParticles& P = collision_->engine().particles();
-    bool changed = false;
-    for (const parcelType& p : cloud)
-    {
-        const scalar f = surfaceIron_->fraction(p.reductionDegree(), p.T());
-        scalar& fp = P.surfaceIron[p.demIndex()];
-        if (f != fp)
-        {
-            fp = f;
-            changed = true;
-        }
-    }
-    if (returnReduce(changed, orOp<bool>()))
-    {
-        collision_->engine().invalidateLists();
-    }
 }
 
 
@@ -722,15 +494,23 @@ void Foam::DEMCloud<CloudType>::motion
     syncParticles(cloud);
 
     // 1b. The hydrogen reduction, from the state at the start of the step
-    if (reduction_.valid())
+    if (chemistry_->reduction())
     {
-        reduce(cloud);
+        chemistry_->reduce
+        (
+            cloud,
+            collision_->engine(),
+            chemistry_->hydrogenTransported()
+          ? scalarField(1e-3*this->thermo().thermo().W()().primitiveField())
+          : scalarField(),
+            dt
+        );
     }
 
     // 1c. The iron on the particles' surfaces
-    if (surfaceIron_.valid())
+    if (chemistry_->surfaceIronActive())
     {
-        updateSurfaceIron(cloud);
+        chemistry_->updateSurfaceIron(cloud, collision_->engine());
     }
 
     demEngine& engine = collision_->engine();
