@@ -146,13 +146,14 @@ const Foam::ironOxidePath& Foam::parcelChemistry::reducedPath
 }
 
 
-Foam::tmp<Foam::volScalarField::Internal> Foam::parcelChemistry::oxygenSource
+Foam::tmp<Foam::volScalarField::Internal>
+Foam::parcelChemistry::noOxygenSource
 (
     const fvMesh& mesh,
     const word& name
-) const
+)
 {
-    tmp<volScalarField::Internal> tS
+    return tmp<volScalarField::Internal>
     (
         new volScalarField::Internal
         (
@@ -169,6 +170,16 @@ Foam::tmp<Foam::volScalarField::Internal> Foam::parcelChemistry::oxygenSource
             dimensionedScalar(dimMoles/dimVolume/dimTime, Zero)
         )
     );
+}
+
+
+Foam::tmp<Foam::volScalarField::Internal> Foam::parcelChemistry::oxygenSource
+(
+    const fvMesh& mesh,
+    const word& name
+) const
+{
+    tmp<volScalarField::Internal> tS(noOxygenSource(mesh, name));
     if (reduction_.valid())
     {
         // In the parcels' cells. Spread by the smoother as the heat and

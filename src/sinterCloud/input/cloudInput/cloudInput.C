@@ -7,6 +7,7 @@
 #include "knownKeywords.H"
 #include "keywordRange.H"
 #include "keywordSource.H"
+#include "patchInteractionDataList.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -167,7 +168,62 @@ void Foam::cloudInput::check(const fvMesh& mesh, const word& cloudName)
 }
 
 
-// ************************************************************************* //
+void Foam::cloudInput::checkSubModels
+(
+    const fvMesh& mesh,
+    const dictionary& subModels
+)
+{
+    const dictionary* localPtr = subModels.findDict("localInteractionCoeffs");
+    if
+    (
+        localPtr
+     && subModels.get<word>("patchInteractionModel") == "localInteraction"
+    )
+    {
+        const patchInteractionDataList patches(mesh, *localPtr);
+        for (const patchInteractionData& pd : patches)
+        {
+            if (!(pd.e() >= 0 && pd.e() <= 1))
+            {
+                FatalIOErrorInFunction(*localPtr)
+                    << "Patch interaction " << pd.patchName() << " in "
+                    << localPtr->name() << ": e = " << pd.e()
+                    << " must be in [0, 1]" << exit(FatalIOError);
+            }
+            if (!(pd.mu() >= 0))
+            {
+                FatalIOErrorInFunction(*localPtr)
+                    << "Patch interaction " << pd.patchName() << " in "
+                    << localPtr->name() << ": mu = " << pd.mu()
+                    << " must be >= 0" << exit(FatalIOError);
+            }
+        }
+    }
+
+    const dictionary* injectorsPtr = subModels.findDict("injectionModels");
+    if (injectorsPtr)
+    {
+        for (const entry& e : *injectorsPtr)
+        {
+            if
+            (
+                e.isDict()
+             && e.dict().lookupOrDefault<word>("parcelBasisType", "")
+             == "fixed"
+             && !(e.dict().get<scalar>("nParticle") > 0)
+            )
+            {
+                FatalIOErrorInKeyword(e.dict(), "nParticle")
+                    << "Keyword nParticle of injector " << e.keyword()
+                    << " in " << e.dict().name() << " must be > 0, not "
+                    << e.dict().get<scalar>("nParticle")
+                    << " (with 0 it injects nothing)" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
 
 
 bool Foam::cloudInput::transportsHydrogen

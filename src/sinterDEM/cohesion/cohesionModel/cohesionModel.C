@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "cohesionModel.H"
+#include "selectedConstructor.H"
 
 namespace Foam
 {
@@ -20,20 +21,12 @@ Foam::autoPtr<Foam::cohesionModel> Foam::cohesionModel::New
 {
     const word modelType(dict.lookupOrDefault<word>("cohesionModel", "none"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "cohesionModel",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
+    const auto cstr = selectedConstructor
+    (
+        dict, "cohesionModel", modelType, *dictionaryConstructorTablePtr_
+    );
 
     Info<< "Selecting cohesionModel " << modelType << endl;
 
-    return cstrIter()(dict, law, coarseGrainFactor, slots);
+    return cstr(dict, law, coarseGrainFactor, slots);
 }

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactLaw.H"
+#include "selectedConstructor.H"
 #include "keywordSource.H"
 
 namespace Foam
@@ -62,18 +63,10 @@ Foam::autoPtr<Foam::contactLaw> Foam::contactLaw::New
 {
     const word lawType(dict.get<word>("contactLaw"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawType);
+    const auto cstr = selectedConstructor
+    (
+        dict, "contactLaw", lawType, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "contactLaw",
-            lawType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return cstrIter()(dict, materials, coarseGrainFactor, slots);
+    return cstr(dict, materials, coarseGrainFactor, slots);
 }

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "dragLaw.H"
+#include "selectedConstructor.H"
 #include "error.H"
 #include "knownKeywords.H"
 #include "keywordSource.H"
@@ -21,20 +22,12 @@ Foam::autoPtr<Foam::dragLaw> Foam::dragLaw::New
 {
     const word lawName(dict.get<word>("law"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawName);
+    const auto cstr = selectedConstructor
+    (
+        dict, "law", lawName, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "law",
-            lawName,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    autoPtr<dragLaw> law(cstrIter()(dict));
+    autoPtr<dragLaw> law(cstr(dict));
 
     wordList valid(law->keywords());
 

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "reductionLaw.H"
+#include "selectedConstructor.H"
 #include "error.H"
 
 namespace Foam
@@ -18,18 +19,10 @@ Foam::autoPtr<Foam::reductionLaw> Foam::reductionLaw::New
 {
     const word lawName(dict.get<word>("law"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawName);
+    const auto cstr = selectedConstructor
+    (
+        dict, "law", lawName, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "law",
-            lawName,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<reductionLaw>(cstrIter()(dict));
+    return autoPtr<reductionLaw>(cstr(dict));
 }

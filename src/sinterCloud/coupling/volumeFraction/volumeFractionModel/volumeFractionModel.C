@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "volumeFractionModel.H"
+#include "selectedConstructor.H"
 
 namespace Foam
 {
@@ -28,22 +29,14 @@ Foam::autoPtr<Foam::volumeFractionModel> Foam::volumeFractionModel::New
 {
     const word methodName(dict.get<word>("volumeFraction"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(methodName);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "volumeFraction",
-            methodName,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
+    const auto cstr = selectedConstructor
+    (
+        dict, "volumeFraction", methodName, *dictionaryConstructorTablePtr_
+    );
 
     Info<< "Selecting volumeFraction " << methodName << endl;
 
-    return autoPtr<volumeFractionModel>(cstrIter()(mesh, dict));
+    return autoPtr<volumeFractionModel>(cstr(mesh, dict));
 }
 
 

@@ -513,3 +513,81 @@ Foam::vector Foam::DEMCollision<CloudType>::wallImpulse
     }
     return impulse;
 }
+
+template<class CloudType>
+void Foam::DEMCollision<CloudType>::syncParticles()
+{
+    const demParticles& P = engine_.particles();
+    const label nLocal = engine_.nLocal();
+
+    // The same particles (in any order: the engine may sort them): each
+    // parcel's index is a local particle of its identity, and identities
+    // are unique
+    bool same = owner_.size() == nLocal;
+    if (same)
+    {
+        for (const parcelType& p : owner_)
+        {
+            const label k = p.demIndex();
+            if (k < 0 || k >= nLocal || P.identity[k] != p.identity())
+            {
+                same = false;
+                break;
+            }
+        }
+    }
+    if (same)
+    {
+        return;
+    }
+
+    // Where each parcel was in the engine, or -1 (new, arrived, read)
+    labelList order(owner_.size());
+    label n = 0;
+    for (const parcelType& p : owner_)
+    {
+        const label k = p.demIndex();
+        order[n++] =
+            (k >= 0 && k < nLocal && P.identity[k] == p.identity()) ? k : -1;
+    }
+
+    engine_.reorder(order);
+
+    demParticles& Q = engine_.particles();
+    n = 0;
+    for (parcelType& p : owner_)
+    {
+        if (order[n] < 0)
+        {
+            Q.position[n] = p.position();
+            Q.velocity[n] = p.U();
+            Q.setSphere(n, 0.5*p.d(), p.rho());
+            Q.identity[n] = p.identity();
+            if (const demParcelState* st = p.state())
+            {
+                Q.angularVelocity[n] = st->angularVelocity;
+                Q.force[n] = st->contactForce;
+                Q.torque[n] = st->contactTorque;
+                engine_.addRecords(n, st->contacts);
+                p.statePtr().clear();
+            }
+        }
+        p.demIndex() = n;
+        ++n;
+    }
+}
+
+
+template<class CloudType>
+void Foam::DEMCollision<CloudType>::stateOf
+(
+    const label i,
+    demParcelState& state
+) const
+{
+    const demParticles& P = engine_.particles();
+    state.angularVelocity = P.angularVelocity[i];
+    state.contactForce = P.force[i];
+    state.contactTorque = P.torque[i];
+    engine_.recordsOf(i, state.contacts);
+}

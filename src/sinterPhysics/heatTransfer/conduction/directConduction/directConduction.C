@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "directConduction.H"
+#include "selectedConstructor.H"
 #include "addToRunTimeSelectionTable.H"
 #include "error.H"
 
@@ -20,18 +21,10 @@ Foam::autoPtr<Foam::directConduction> Foam::directConduction::New
 {
     const word name(dict.get<word>("direct"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+    const auto cstr = selectedConstructor
+    (
+        dict, "direct", name, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "direct",
-            name,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<directConduction>(cstrIter()(dict));
+    return autoPtr<directConduction>(cstr(dict));
 }

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "indirectConduction.H"
+#include "selectedConstructor.H"
 #include "addToRunTimeSelectionTable.H"
 #include "error.H"
 
@@ -26,18 +27,10 @@ Foam::autoPtr<Foam::indirectConduction> Foam::indirectConduction::New
 {
     const word name(dict.get<word>("indirect"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+    const auto cstr = selectedConstructor
+    (
+        dict, "indirect", name, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "indirect",
-            name,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<indirectConduction>(cstrIter()(dict, ks));
+    return autoPtr<indirectConduction>(cstr(dict, ks));
 }

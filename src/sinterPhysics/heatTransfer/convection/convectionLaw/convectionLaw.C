@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "convectionLaw.H"
+#include "selectedConstructor.H"
 #include "error.H"
 #include "mathematicalConstants.H"
 
@@ -19,20 +20,12 @@ Foam::autoPtr<Foam::convectionLaw> Foam::convectionLaw::New
 {
     const word lawName(dict.get<word>("law"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(lawName);
+    const auto cstr = selectedConstructor
+    (
+        dict, "law", lawName, *dictionaryConstructorTablePtr_
+    );
 
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "law",
-            lawName,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<convectionLaw>(cstrIter()(dict));
+    return autoPtr<convectionLaw>(cstr(dict));
 }
 
 
