@@ -9,8 +9,7 @@ Foam::DEMGasCoupling<CloudType>::DEMGasCoupling(CloudType& owner)
 :
     owner_(owner),
     exchange_(owner.mesh()),
-    massChecked_(false),
-    coupled_(false)
+    massChecked_(false)
 {}
 
 
@@ -68,7 +67,6 @@ void Foam::DEMGasCoupling<CloudType>::start
 )
 {
     const bool coupled = owner_.solution().coupled();
-    coupled_ = coupled;
     const bool correctSource = owner_.solution().cellValueSourceCorrection();
     const bool implicitHeat = heatImplicit();
     demParticles& P = engine.particles();
@@ -198,8 +196,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMGasCoupling<CloudType>::Sh
         owner_.thermo().thermo().Cp()().primitiveField(),
         owner_.hsTrans().field(),
         owner_.hsCoeff().field(),
-        owner_.db().time().deltaTValue(),
-        heatImplicit()
+        owner_.db().time().deltaTValue()
     );
 }
 

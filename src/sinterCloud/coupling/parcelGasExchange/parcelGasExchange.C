@@ -115,13 +115,11 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::parcelGasExchange::Sh
     const scalarField& Cp,
     const scalarField& hsTrans,
     const scalarField& hsCoeff,
-    const scalar dt,
-    const bool implicit
+    const scalar dt
 ) const
 {
     tmp<fvScalarMatrix> tSh(new fvScalarMatrix(hs, dimEnergy/dimTime));
-    const cloudCoupling& coupling = cloudCoupling::New(mesh_);
-    const diffusionSmoother& smoother = coupling.smoother();
+    const diffusionSmoother& smoother = cloudCoupling::New(mesh_).smoother();
     const scalarField& V = mesh_.V();
 
     // Explicit exchange (and that of particles that left in the step),
@@ -133,7 +131,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::parcelGasExchange::Sh
     //     smoothed:  S(sum m c_p f T_p/(V dt)) - B T_g,
     //     local:     S(sum m c_p f (T_p - T_g^0(x_p))/(V dt)) - B (T_g - T_g^0),
     //     B = S(sum m c_p f/(V dt)),  T_g = T_g^0 + (h - h^0)/c_p
-    if (implicit)
+    if (implicit_)
     {
         const scalarField A
         (
@@ -145,7 +143,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::parcelGasExchange::Sh
         );
         const scalarField BTg
         (
-            coupling.localGasTemperature()
+            local_
           ? smoother.smooth<scalar>(gas_/(V*dt), "cloudHeatGas")
           : B*gasT0_
         );
