@@ -68,10 +68,18 @@ check(len(s) == 200 and s == p,
       f'{max(pairs)} particle-particle, {max(walls)} particle-wall)')
 check(max(pairs) > 0 and max(walls) > 0, 'contacts of both kinds occurred')
 
-# 2. Positions and velocities at 0.02 s, parcels matched by nearest position
-xs, xp = positions('serial', 0.02), positions('parallel', 0.02)
-us, up = rows('serial', 0.02, 'U'), rows('parallel', 0.02, 'U')
-Ts, Tp = rows('serial', 0.02, 'T'), rows('parallel', 0.02, 'T')
+# 2. Positions, velocities and temperatures at 0.01 s, parcels matched by
+# nearest position. Not at the end: from about 0.011 s the beads land on
+# the floor and on each other, bridged, and that stretch amplifies any
+# difference by orders of magnitude, by an amount that depends on the
+# trajectory - a serial run with its input changed in the twelfth digit
+# parts from itself beyond these tolerances by 0.02 s in some modes. By
+# 0.01 s the beads have met across the processor boundary (the counts
+# above) and 2 ranks differ from serial by round-off only
+STATE_TIME = 0.01
+xs, xp = positions('serial', STATE_TIME), positions('parallel', STATE_TIME)
+us, up = rows('serial', STATE_TIME, 'U'), rows('parallel', STATE_TIME, 'U')
+Ts, Tp = rows('serial', STATE_TIME, 'T'), rows('parallel', STATE_TIME, 'T')
 check(len(xs) == len(xp) == 48, f'48 beads in both runs ({len(xs)}, {len(xp)})')
 used = set()
 dx = du = dT = 0.0
@@ -84,7 +92,9 @@ for a, ua, Ta in zip(xs, us, Ts):
 check(len(used) == len(xs), 'one-to-one match of the beads')
 
 # ... decomposed, run and reconstructed: no contact record lost or gained,
-# bead by bead (the first number of a bead's row is its record count)
+# bead by bead (the first number of a bead's row is its record count), at
+# the end
+xs, xp = positions('serial', 0.02), positions('parallel', 0.02)
 cs = [int(r[0]) for r in rows('serial', 0.02, 'demContactDuration')]
 cp = [int(r[0]) for r in rows('parallel', 0.02, 'demContactDuration')]
 twin = [min(range(len(xp)), key=lambda k: math.dist(a, xp[k])) for a in xs]
@@ -92,8 +102,11 @@ check(sum(cs) > 0 and sum(cs) == sum(cp)
       and all(cs[i] == cp[k] for i, k in enumerate(twin)),
       f'2 ranks reconstructed: {sum(cp)} contact records, serial {sum(cs)}, '
       f'bead by bead equal')
-check(dx <= POSITION_TOL, f'largest position difference {dx:.3g} m '
+check(dx <= POSITION_TOL, f'largest position difference at {STATE_TIME:g} s {dx:.3g} m '
       f'(tolerance {POSITION_TOL:g} m)')
+xe, xf = positions('serial', 0.02), positions('parallel', 0.02)
+print(f'     (at 0.02 s, not checked: largest position difference '
+      f'{max(min(math.dist(a, b) for b in xf) for a in xe):.3g} m)')
 check(du <= VELOCITY_TOL, f'largest velocity difference {du:.3g} m/s '
       f'(tolerance {VELOCITY_TOL:g} m/s)')
 check(dT <= TEMPERATURE_TOL, f'largest temperature difference {dT:.3g} K '

@@ -4,6 +4,7 @@
 #include "parcelChemistry.H"
 #include "keywordRange.H"
 #include "keywordSource.H"
+#include "cloudCoupling.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -182,12 +183,15 @@ Foam::tmp<Foam::volScalarField::Internal> Foam::parcelChemistry::oxygenSource
     tmp<volScalarField::Internal> tS(noOxygenSource(mesh, name));
     if (reduction_.valid())
     {
-        // In the parcels' cells. Spread by the smoother as the heat and
-        // momentum sources are, this source (through the gas's mass)
-        // made a run on 2 processors part from the serial one beyond
-        // round-off (dem_twoRanksMatchSerial_withReducedSurfaceBridges)
+        // Per volume and time, spread over the smoothing length as the heat
+        // and momentum sources are (the distribution D of eq 4.7); the
+        // smoothing keeps the sum over the cells
         tS.ref().field() =
-            oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue());
+            cloudCoupling::New(mesh).smoother().smooth<scalar>
+            (
+                oxygenRemoved_/(mesh.V().field()*mesh.time().deltaTValue()),
+                "cloudOxygen"
+            );
     }
     return tS;
 }
