@@ -96,14 +96,12 @@ struct sizeClasses
 //- A particle diameter [m] of a fluidized bed: in [0.1 um, 5 cm]
 void checkSize(const dictionary& dict, const word& key, const scalar d)
 {
-    if (!(d >= 1e-7 && d <= 0.05))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Keyword " << key << " " << d << " in " << dict.name()
-            << " must be a particle diameter in metres, in [1e-7, 0.05] m"
-            << (d > 0.05 ? " (micrometres? 58 um is 58e-6)" : "")
-            << exit(FatalIOError);
-    }
+    keywordRange::check
+    (
+        dict, key, d, 1e-7, 0.05,
+        std::string("a particle diameter [m]")
+      + (d > 0.05 ? " (micrometres? 58 um is 58e-6)" : "")
+    );
 }
 
 

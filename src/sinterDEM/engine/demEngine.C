@@ -4,6 +4,7 @@
 #include "demEngine.H"
 #include <utility>
 #include "keywordSource.H"
+#include "keywordRange.H"
 
 Foam::demEngine::demEngine
 (
@@ -23,7 +24,14 @@ Foam::demEngine::demEngine
         dict, materials_, law_->thermalOverlapExponent(), coarseGrainFactor
     ),
     time_(0),
-    skinFraction_(dict.lookupOrDefault<scalar>("skin", 0.1)),
+    skinFraction_
+    (
+        keywordRange::aboveOrDefault<scalar>
+        (
+            dict, "skin", 0.1, 0, false,
+            "the neighbour lists' skin, a fraction of the largest diameter"
+        )
+    ),
     skin_(0),
     nLocal_(0),
     listsValid_(false),
@@ -35,13 +43,6 @@ Foam::demEngine::demEngine
     movedValid_(false),
     recordIndexValid_(false)
 {
-    if (!(skinFraction_ > 0))
-    {
-        FatalIOErrorInKeyword(dict, "skin")
-            << "Keyword skin in " << dict.name()
-            << " must be positive, not " << skinFraction_
-            << exit(FatalIOError);
-    }
     pairs_.setLayout(law_->nCoeffs(), slots_.stride(), false);
     wallContacts_.setLayout(law_->nWallCoeffs(), slots_.stride(), true);
 }

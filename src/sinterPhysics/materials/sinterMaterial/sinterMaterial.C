@@ -6,33 +6,7 @@
 #include "TableBase.H"
 #include "IOmanip.H"
 #include "keywordSource.H"
-
-namespace
-{
-
-// A required positive (or in-range) scalar, fatal naming the keyword
-Foam::scalar readRange
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar lower,
-    const Foam::scalar upper,
-    const char* what
-)
-{
-    const Foam::scalar value(dict.get<Foam::scalar>(key));
-
-    if (!(value > lower && value < upper))
-    {
-        FatalIOErrorInKeyword(dict, key)
-            << key << " " << value << " invalid: " << what
-            << Foam::exit(Foam::FatalIOError);
-    }
-
-    return value;
-}
-
-} // End anonymous namespace
+#include "keywordRange.H"
 
 
 const Foam::wordList& Foam::sinterMaterial::keywords()
@@ -53,23 +27,29 @@ Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
     name_(dict.dictName()),
     rho_
     (
-        readRange
+        keywordRange::get
         (
             dict, "density", densityMin(), densityMax(),
-            "must lie in (10, 3e4) kg/m^3"
+            "the particles' density [kg/m^3]", true, true
         )
     ),
     Y_
     (
-        readRange
+        keywordRange::get
         (
             dict, "youngsModulus", modulusMin(), modulusMax(),
-            "must lie in (1e3, 1e13) Pa (hematite 359e9, Table 2.4)"
+            "Young's modulus [Pa] (hematite 359e9, Table 2.4)", true, true
         )
     ),
-    nu_(readRange(dict, "poissonsRatio", -SMALL, 0.5, "must lie in [0, 0.5)")),
-    gamma_(readRange(dict, "surfaceTension", 0, GREAT, "must be > 0 [N/m]")),
-    delta_(readRange(dict, "latticeConstant", 0, GREAT, "must be > 0 [m]")),
+    nu_
+    (
+        keywordRange::get
+        (
+            dict, "poissonsRatio", 0, 0.5, "Poisson's ratio", false, true
+        )
+    ),
+    gamma_(keywordRange::positive(dict, "surfaceTension", "[N/m]")),
+    delta_(keywordRange::positive(dict, "latticeConstant", "[m]")),
     Ds_(dict),
     sigma_(Function1<scalar>::New("tensileStrength", dict)),
     sigmaTlow_(-GREAT),

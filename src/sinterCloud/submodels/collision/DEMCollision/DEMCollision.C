@@ -10,6 +10,7 @@
 #include "IOdictionary.H"
 #include "knownKeywords.H"
 #include "keywordSource.H"
+#include "keywordRange.H"
 
 template<class CloudType>
 Foam::labelList Foam::DEMCollision<CloudType>::wallPatchIds() const
@@ -141,35 +142,29 @@ Foam::DEMCollision<CloudType>::DEMCollision
             << " in " << coeffs.name()
             << exit(FatalIOError);
     }
-    if (hasStep && !(deltaT_ > 0))
+    if (hasStep)
     {
-        FatalIOErrorInKeyword(coeffs, "deltaT")
-            << "Keyword deltaT in " << coeffs.name()
-            << " must be positive, not " << deltaT_
-            << exit(FatalIOError);
+        keywordRange::check
+        (
+            coeffs, "deltaT", deltaT_, 0, GREAT, "the DEM step [s]", true
+        );
     }
-    if
+    if (hasFraction)
+    {
+        keywordRange::check
+        (
+            coeffs, "collisionTimeFraction", fraction_, 0,
+            maxCollisionTimeFraction,
+            "the DEM step as a fraction of the collision time t_c", true
+        );
+    }
+    keywordRange::check
     (
-        hasFraction
-     && !(fraction_ > 0 && fraction_ <= maxCollisionTimeFraction)
-    )
-    {
-        FatalIOErrorInKeyword(coeffs, "collisionTimeFraction")
-            << "Keyword collisionTimeFraction in " << coeffs.name()
-            << " must lie in (0, " << maxCollisionTimeFraction
-            << "], not " << fraction_
-            << exit(FatalIOError);
-    }
-    if (!(impactVelocity_ >= 0.01 && impactVelocity_ <= 100))
-    {
-        FatalIOErrorInKeyword(coeffs, "impactVelocity")
-            << "Keyword impactVelocity in " << coeffs.name()
-            << " must lie in [0.01, 100] m/s, not " << impactVelocity_ << nl
-            << "It is the approach speed of the collision time t_c that"
-            << " sets the DEM step: a tiny one lengthens t_c (as v^-1/5"
-            << " for Hertz) and so the step"
-            << exit(FatalIOError);
-    }
+        coeffs, "impactVelocity", impactVelocity_, 0.01, 100,
+        "the approach speed [m/s] of the collision time t_c that sets the"
+        " DEM step: a tiny one lengthens t_c (as v^-1/5 for Hertz) and so"
+        " the step"
+    );
 
     // The cloud's density and heat capacity are the particles' material's
     const dictionary& constProps = owner.constProps().dict();

@@ -285,17 +285,18 @@ Foam::LatticeBedInjection<CloudType>::LatticeBedInjection
             << " hold nParticle particles; massTotal sets how many)"
             << exit(FatalIOError);
     }
-    if (!(this->nParticleFixed_ > 0))
+    keywordRange::check
+    (
+        cd, "nParticle", this->nParticleFixed_, 0, GREAT,
+        "the particles each parcel holds", true
+    );
+    if (owner.solution().active())
     {
-        FatalIOErrorInKeyword(cd, "nParticle")
-            << "Keyword nParticle in " << cd.name() << " must be > 0, not "
-            << this->nParticleFixed_ << exit(FatalIOError);
-    }
-    if (owner.solution().active() && !(this->massTotal_ > 0))
-    {
-        FatalIOErrorInKeyword(cd, "massTotal")
-            << "Keyword massTotal in " << cd.name() << " must be > 0 kg, not "
-            << this->massTotal_ << exit(FatalIOError);
+        keywordRange::check
+        (
+            cd, "massTotal", this->massTotal_, 0, GREAT,
+            "the bed's mass [kg]", true
+        );
     }
     if (hasBox_)
     {
