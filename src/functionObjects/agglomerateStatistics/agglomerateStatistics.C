@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <map>
 #include "keywordSource.H"
+#include "keywordRange.H"
 
 namespace Foam
 {
@@ -80,24 +81,18 @@ bool Foam::functionObjects::agglomerateStatistics::read
             << " engine: agglomerates need collisionModel demCollision"
             << exit(FatalIOError);
     }
-    minContactTime_ = dict.lookupOrDefault<scalar>("minContactTime", 0.01);
-    minSize_ = dict.lookupOrDefault<label>("minSize", 5);
+    minContactTime_ = keywordRange::aboveOrDefault<scalar>
+    (
+        dict, "minContactTime", 0.01, 0, true,
+        "the least contact time [s] of an agglomerate's contact"
+    );
+    minSize_ = keywordRange::aboveOrDefault<label>
+    (
+        dict, "minSize", 5, 2, true,
+        "the least number of parcels of an agglomerate"
+    );
     bridgedOnly_ = dict.lookupOrDefault<Switch>("bridgedOnly", false);
 
-    if (!(minContactTime_ >= 0))
-    {
-        FatalIOErrorInKeyword(dict, "minContactTime")
-            << "Keyword minContactTime of " << name() << " is the least"
-            << " contact time [s] of an agglomerate's contact and must be"
-            << " >= 0, not " << minContactTime_ << exit(FatalIOError);
-    }
-    if (minSize_ < 2)
-    {
-        FatalIOErrorInKeyword(dict, "minSize")
-            << "Keyword minSize of " << name() << " is the least number of"
-            << " parcels of an agglomerate and must be >= 2, not "
-            << minSize_ << exit(FatalIOError);
-    }
     if (bridgedOnly_ && engine->cohesion().bridgeSlot() < 0)
     {
         FatalIOErrorInKeyword(dict, "bridgedOnly")

@@ -24,23 +24,16 @@ void Foam::bedWallTemperatureFvPatchScalarField::readData
     const dictionary& dict
 )
 {
-    h_ = dict.get<scalar>("h");
-    if (!(h_ > 0))
-    {
-        FatalIOErrorInKeyword(dict, "h")
-            << "h " << h_ << " in " << dict.name()
-            << ": the bed-to-wall heat transfer coefficient must be > 0"
-               " W/(m^2 K)" << exit(FatalIOError);
-    }
+    h_ = keywordRange::positive
+    (
+        dict, "h", "the bed-to-wall heat transfer coefficient [W/(m^2 K)]"
+    );
 
-    Text_ = dict.get<scalar>("Text");
-    if (!(Text_ >= 200))
-    {
-        FatalIOErrorInKeyword(dict, "Text")
-            << "Text " << Text_ << " in " << dict.name()
-            << " is below 200 K: temperatures are in kelvin"
-            << exit(FatalIOError);
-    }
+    Text_ = keywordRange::above<scalar>
+    (
+        dict, "Text", 200, true,
+        "the temperature outside the wall [K] (temperatures are in kelvin)"
+    );
 
     // The particles' conductivity, from the case's one material file
     const contactMaterials materials

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "cloudCoupling.H"
+#include "keywordRange.H"
 #include "keywordSource.H"
 
 namespace Foam
@@ -16,14 +17,11 @@ namespace
 Foam::scalar readVoidageMin(const Foam::dictionary& dict)
 {
     using namespace Foam;
-    const scalar value = dict.get<scalar>("voidageMin");
-    if (value <= 0 || value >= 1)
-    {
-        FatalIOErrorInKeyword(dict, "voidageMin")
-            << "voidageMin " << value << " must lie in (0, 1)"
-            << exit(FatalIOError);
-    }
-    return value;
+    return keywordRange::get
+    (
+        dict, "voidageMin", 0, 1,
+        "the smallest gas volume fraction the coupling allows", true, true
+    );
 }
 
 

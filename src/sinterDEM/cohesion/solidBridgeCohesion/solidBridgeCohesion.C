@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "solidBridgeCohesion.H"
+#include "keywordRange.H"
 #include "knownKeywords.H"
 #include "keywordSource.H"
 #include "contactLaw.H"
@@ -242,12 +243,11 @@ Foam::cohesionModels::solidBridge::solidBridge
             timeCorrection(law.particleMaterial(), law.materials().wall(m));
     }
 
-    if (activationTime_ < 0)
-    {
-        FatalIOErrorInKeyword(coeffs_, "activationTime")
-            << "activationTime " << activationTime_ << " must be >= 0 [s]"
-            << exit(FatalIOError);
-    }
+    keywordRange::check
+    (
+        coeffs_, "activationTime", activationTime_, 0, GREAT,
+        "the time the bridges begin to grow [s]"
+    );
 
     Info<< "    solid bridges: C " << law_.C() << ", activation at "
         << activationTime_ << " s, contact-time correction c = " << cPair_

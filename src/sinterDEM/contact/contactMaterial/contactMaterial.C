@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "contactMaterial.H"
+#include "keywordRange.H"
 #include "effectiveProperties.H"
 #include "contactMaterials.H"
 #include "knownKeywords.H"
@@ -17,16 +18,14 @@ Foam::contactMaterial::contactMaterial(const dictionary& dict)
       : contactMaterials::modulus(dict, "youngsModulus")
     ),
     realYoungsModulus_(contactMaterials::modulus(dict, "youngsModulus")),
-    poissonsRatio_(dict.get<scalar>("poissonsRatio"))
-{
-    if (!(poissonsRatio_ > -1 && poissonsRatio_ < 0.5))
-    {
-        FatalIOErrorInKeyword(dict, "poissonsRatio")
-            << "Keyword poissonsRatio in " << dict.name()
-            << " must lie in (-1, 0.5), not " << poissonsRatio_
-            << exit(FatalIOError);
-    }
-}
+    poissonsRatio_
+    (
+        keywordRange::get
+        (
+            dict, "poissonsRatio", -1, 0.5, "Poisson's ratio", true, true
+        )
+    )
+{}
 
 
 Foam::contactMaterial::contactMaterial(scalar Y, scalar Y0, scalar nu)
@@ -87,27 +86,20 @@ Foam::contactProperties::contactProperties
     rollingFriction_(dict.lookupOrDefault<scalar>("rollingFriction", 0))
 {
     knownKeywords::check(dict, {"restitution", "friction", "rollingFriction"});
-    if (!(restitution_ > 0 && restitution_ <= 1))
-    {
-        FatalIOErrorInKeyword(dict, "restitution")
-            << "Keyword restitution in " << dict.name()
-            << " must lie in (0, 1], not " << restitution_
-            << exit(FatalIOError);
-    }
-    if (!(friction_ >= 0))
-    {
-        FatalIOErrorInKeyword(dict, "friction")
-            << "Keyword friction in " << dict.name()
-            << " must not be negative, not " << friction_
-            << exit(FatalIOError);
-    }
-    if (!(rollingFriction_ >= 0))
-    {
-        FatalIOErrorInKeyword(dict, "rollingFriction")
-            << "Keyword rollingFriction in " << dict.name()
-            << " must not be negative, not " << rollingFriction_
-            << exit(FatalIOError);
-    }
+    keywordRange::check
+    (
+        dict, "restitution", restitution_, 0, 1,
+        "the coefficient of restitution", true
+    );
+    keywordRange::check
+    (
+        dict, "friction", friction_, 0, GREAT, "the sliding friction coefficient"
+    );
+    keywordRange::check
+    (
+        dict, "rollingFriction", rollingFriction_, 0, GREAT,
+        "the rolling friction coefficient"
+    );
 }
 
 

@@ -45,7 +45,7 @@ Foam::sinterMaterial::sinterMaterial(const dictionary& dict)
     (
         keywordRange::get
         (
-            dict, "poissonsRatio", 0, 0.5, "Poisson's ratio", false, true
+            dict, "poissonsRatio", -1, 0.5, "Poisson's ratio", true, true
         )
     ),
     gamma_(keywordRange::positive(dict, "surfaceTension", "[N/m]")),

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "RongHorio.H"
+#include "keywordRange.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 #include "error.H"
@@ -55,14 +56,11 @@ Foam::indirectConductions::RongHorio::RongHorio
             .get<scalar>("minimumDistance")
     )
 {
-    if (!(s_ > 0))
-    {
-        const dictionary& coeffs = dict.optionalSubDict(typeName + "Coeffs");
-        FatalIOErrorInKeyword(coeffs, "minimumDistance")
-            << "Keyword minimumDistance in " << coeffs.name() << " is the"
-            << " minimum conduction distance s [m] and must be > 0, not "
-            << s_ << exit(FatalIOError);
-    }
+    keywordRange::check
+    (
+        dict.optionalSubDict(typeName + "Coeffs"), "minimumDistance", s_, 0,
+        GREAT, "the minimum conduction distance s [m]", true
+    );
 }
 
 
