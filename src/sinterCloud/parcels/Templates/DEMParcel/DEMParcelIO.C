@@ -46,16 +46,22 @@ namespace Foam
 namespace DEMParcelDetail
 {
 
-//- A lagrangian field of the cloud if its file is there (on any processor)
+//- A lagrangian field-field of the cloud if its file is there (on any
+//  processor). Written in binary its class is the compact one
+//  (scalarFieldCompactField), in ASCII the plain one (scalarFieldField);
+//  FieldType (a CompactIOField) reads either
 template<class FieldType, class CloudType>
 bool present(const CloudType& c, const word& name)
 {
-    return returnReduce
-    (
-        c.fieldIOobject(name, IOobject::MUST_READ)
-            .template typeHeaderOk<FieldType>(true),
-        orOp<bool>()
-    );
+    IOobject io(c.fieldIOobject(name, IOobject::MUST_READ));
+    const bool found =
+        io.template typeHeaderOk<FieldType>(false)
+     && (
+            io.headerClassName() == FieldType::typeName
+         || io.headerClassName()
+         == IOField<typename FieldType::value_type>::typeName
+        );
+    return returnReduce(found, orOp<bool>());
 }
 
 
