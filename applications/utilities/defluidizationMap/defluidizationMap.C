@@ -488,21 +488,21 @@ int main(int argc, char *argv[])
             const scalar sigmaFe = 0
         )
         {
-            const surfaceIron surface(ironOxidePath(p.ironContent), s);
+            const ironOxidePath path(p.ironContent);
             const HertzCollision hertz
             (
-                p.d/2, p.m*surface.path().massRatio(X), material.Y(),
-                material.nu()
+                p.d/2, p.m*path.massRatio(X), material.Y(), material.nu()
             );
             const scalar Fn = hertz.maxNormalForce(v);
             const scalar tc = hertz.contactTime(v);
             const scalar rp = p.d/2;
-            return [&reducedBridge, surface, X, rp, Fn, tc, fixedStrength, sigmaFe]
+            return
+            [&reducedBridge, path, s, X, rp, Fn, tc, fixedStrength, sigmaFe]
             (
                 const scalar T
             )
             {
-                const scalar f = surface.fraction(X, T);
+                const scalar f = surfaceIron(path, s).fraction(X, T);
                 if (!fixedStrength)
                 {
                     return reducedBridge.force(rp, T, tc, f, f) - Fn;
@@ -642,7 +642,8 @@ int main(int argc, char *argv[])
             << ", exponent " << sExponent << "):" << nl;
         for (const powder& p : powders)
         {
-            const surfaceIron surface(ironOxidePath(p.ironContent), sExponent);
+            const ironOxidePath path(p.ironContent);
+            const surfaceIron surface(path, sExponent);
             for (const scalar X : Xs)
             {
                 const scalar Tt = crossing

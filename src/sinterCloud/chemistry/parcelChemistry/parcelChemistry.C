@@ -40,7 +40,7 @@ Foam::parcelChemistry::parcelChemistry
                 << " the surface iron of a particle follows from its"
                 << " reduction degree and W0" << exit(FatalIOError);
         }
-        surfaceIron_.reset(new surfaceIron(particle));
+        surfaceIron_.reset(new surfaceIron(path_(), particle));
         Info<< "    surface iron of the particles from their reduction"
             << " degree: iron content W0 "
             << surfaceIron_->path().ironContent() << ", surface enrichment"
@@ -66,13 +66,21 @@ Foam::parcelChemistry::parcelChemistry
         return;
     }
     const dictionary& dict = *dictPtr;
+    if (!path_.valid())
+    {
+        FatalIOErrorInFunction(particle)
+            << "The hydrogen reduction (" << dict.name() << ") needs the"
+            << " particles' iron content: give ironContent (W0(TFe)) in the"
+            << " particles' material " << particle.name()
+            << exit(FatalIOError);
+    }
 
     reduction_.reset
     (
         new parcelReduction
         (
             dict,
-            particle,
+            path_(),
             wordList({"gas", "hydrogenMoleFraction", "diffusivity"})
         )
     );

@@ -38,7 +38,36 @@ Foam::parcelReduction::parcelReduction
            .subDict("kinetics")
         )
     ),
-    path_(material),
+    ownPath_(new ironOxidePath(material)),
+    path_(ownPath_()),
+    acceleration_
+    (
+        keywordRange::getOrDefault
+        (
+            dict, "acceleration", 1, 1, 1e6,
+            "the chemistry's time-acceleration factor (1: real time)"
+        )
+    )
+{}
+
+
+Foam::parcelReduction::parcelReduction
+(
+    const dictionary& dict,
+    const ironOxidePath& path,
+    const wordList& readerKeywords
+)
+:
+    law_
+    (
+        reductionLaw::New
+        (
+            knownKeywords::checked(dict, validKeywords(readerKeywords))
+           .subDict("kinetics")
+        )
+    ),
+    ownPath_(),
+    path_(path),
     acceleration_
     (
         keywordRange::getOrDefault
