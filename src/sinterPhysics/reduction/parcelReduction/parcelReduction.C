@@ -26,7 +26,8 @@ Foam::wordList validKeywords(const Foam::wordList& readerKeywords)
 Foam::parcelReduction::parcelReduction
 (
     const dictionary& dict,
-    const dictionary& material,
+    autoPtr<ironOxidePath>&& own,
+    const ironOxidePath* given,
     const wordList& readerKeywords
 )
 :
@@ -38,8 +39,8 @@ Foam::parcelReduction::parcelReduction
            .subDict("kinetics")
         )
     ),
-    ownPath_(new ironOxidePath(material)),
-    path_(ownPath_()),
+    ownPath_(std::move(own)),
+    path_(given ? *given : ownPath_()),
     acceleration_
     (
         keywordRange::getOrDefault
@@ -54,28 +55,28 @@ Foam::parcelReduction::parcelReduction
 Foam::parcelReduction::parcelReduction
 (
     const dictionary& dict,
+    const dictionary& material,
+    const wordList& readerKeywords
+)
+:
+    parcelReduction
+    (
+        dict,
+        autoPtr<ironOxidePath>(new ironOxidePath(material)),
+        nullptr,
+        readerKeywords
+    )
+{}
+
+
+Foam::parcelReduction::parcelReduction
+(
+    const dictionary& dict,
     const ironOxidePath& path,
     const wordList& readerKeywords
 )
 :
-    law_
-    (
-        reductionLaw::New
-        (
-            knownKeywords::checked(dict, validKeywords(readerKeywords))
-           .subDict("kinetics")
-        )
-    ),
-    ownPath_(),
-    path_(path),
-    acceleration_
-    (
-        keywordRange::getOrDefault
-        (
-            dict, "acceleration", 1, 1, 1e6,
-            "the chemistry's time-acceleration factor (1: real time)"
-        )
-    )
+    parcelReduction(dict, autoPtr<ironOxidePath>(), &path, readerKeywords)
 {}
 
 
