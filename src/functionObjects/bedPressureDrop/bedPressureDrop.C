@@ -275,7 +275,7 @@ bool Foam::functionObjects::bedPressureDrop::execute()
     {
         for (const basicSinterParcel& parcel : *cloudPtr)
         {
-            const scalar m = parcel.nParticle()*parcel.mass();
+            const scalar m = parcel.nParticle()*cloudPtr->mass(parcel);
             mass += m;
             massVoidage += m*voidage[parcel.cell()];
         }

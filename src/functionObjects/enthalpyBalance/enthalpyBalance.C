@@ -95,12 +95,15 @@ Foam::scalar Foam::functionObjects::enthalpyBalance::particleEnthalpy
     scalar mT = 0;
     if (const basicSinterCloud* cloudPtr = findSinterCloud(mesh_, cloudName_))
     {
-        for (const auto& p : *cloudPtr)
+        const basicSinterCloud& cloud = *cloudPtr;
+        const scalar Cp = cloud.constProps().Cp0();
+        for (const auto& p : cloud)
         {
-            const scalar m = p.nParticle()*p.mass();
-            H += m*p.Cp()*p.T();
+            const scalar m = p.nParticle()*cloud.mass(p);
+            const scalar T = cloud.temperature(p);
+            H += m*Cp*T;
             mass += m;
-            mT += m*p.T();
+            mT += m*T;
         }
     }
     reduce(mass, sumOp<scalar>());

@@ -136,16 +136,16 @@ void Foam::functionObjects::particleStatistics::distributions
     for (const basicSinterParcel& p : cloud)
     {
         const scalar n = p.nParticle();
-        speed.add(mag(p.U()), n);
-        T.add(p.T(), massWeighted ? n*p.mass() : n);
+        speed.add(mag(cloud.velocity(p)), n);
+        T.add(cloud.temperature(p), massWeighted ? n*cloud.mass(p) : n);
     }
     speed.reduce();
     T.reduce();
     for (const basicSinterParcel& p : cloud)
     {
         const scalar n = p.nParticle();
-        speed.addSpread(mag(p.U()), n);
-        T.addSpread(p.T(), massWeighted ? n*p.mass() : n);
+        speed.addSpread(mag(cloud.velocity(p)), n);
+        T.addSpread(cloud.temperature(p), massWeighted ? n*cloud.mass(p) : n);
     }
     speed.reduceSpread();
     T.reduceSpread();
@@ -176,7 +176,7 @@ bool Foam::functionObjects::particleStatistics::execute()
     {
         ++parcels;
         sumTheta += Theta[p.cell()];
-        const scalar m = p.nParticle()*p.mass();
+        const scalar m = p.nParticle()*cloud.mass(p);
         const scalar z = (p.position() & up) - floor;
         mass += m;
         massHeight += m*z;

@@ -191,7 +191,7 @@ bool Foam::functionObjects::solidsFlux::execute()
     for (const basicSinterParcel& p : cloud)
     {
         position[i] = p.position();
-        U[i] = p.U();
+        U[i] = cloud.velocity(p);
         volume[i] = p.nParticle()*constant::mathematical::pi/6*pow3(p.d());
         ++i;
     }

@@ -41,22 +41,24 @@ void Foam::parcelChemistry::reduce
     }
     oxygenRemoved_ = 0;
 
+    // The particles' state is the engine's; the parcels give their cells
+    const scalar Cp = cloud.constProps().Cp0();
     scalar oxygen = 0, heat = 0, sumX = 0;
     scalar minX = GREAT, maxX = -GREAT;
-    for (auto& p : cloud)
+    for (const auto& p : cloud)
     {
-        const scalar m = p.mass();
+        const label i = p.demIndex();
+        const scalar m = cloud.mass(p);
         const parcelReduction::step s = reduction_->advance
         (
-            p.reductionDegree(), p.T(), m,
+            P.reductionDegree[i], P.temperature[i], m,
             hydrogenTransported_ ? yH2[p.cell()] : hydrogenMoleFraction_,
             dt
         );
         oxygenRemoved_[p.cell()] += p.nParticle()*s.oxygen;
-        p.reductionDegree() = s.X;
-        p.rho() *= s.mass/m;
-        p.T() -= s.heat/(s.mass*p.Cp());
-        P.setSphere(p.demIndex(), 0.5*p.d(), p.rho());
+        P.reductionDegree[i] = s.X;
+        P.temperature[i] -= s.heat/(s.mass*Cp);
+        P.setSphere(i, P.radius[i], P.density[i]*(s.mass/m));
 
         oxygen += p.nParticle()*s.oxygen;
         heat += p.nParticle()*s.heat;
@@ -97,8 +99,10 @@ void Foam::parcelChemistry::updateSurfaceIron
     bool changed = false;
     for (const auto& p : cloud)
     {
-        const scalar f = surfaceIron_->fraction(p.reductionDegree(), p.T());
-        scalar& fp = P.surfaceIron[p.demIndex()];
+        const label i = p.demIndex();
+        const scalar f =
+            surfaceIron_->fraction(P.reductionDegree[i], P.temperature[i]);
+        scalar& fp = P.surfaceIron[i];
         if (f != fp)
         {
             fp = f;

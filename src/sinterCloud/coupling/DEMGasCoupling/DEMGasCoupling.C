@@ -3,14 +3,46 @@
 
 #include "DEMGasCoupling.H"
 #include "forceSuSp.H"
+#include "VoidageDragForce.H"
+#include "GasPressureGradientForce.H"
+#include "WeightForce.H"
 
 template<class CloudType>
 Foam::DEMGasCoupling<CloudType>::DEMGasCoupling(CloudType& owner)
 :
     owner_(owner),
     exchange_(owner.mesh()),
-    massChecked_(false)
-{}
+    drag_(nullptr)
+{
+    // The engine holds the particles' state: the DEM cloud's forces take
+    // it (the drag, the only one that reads the velocity, from here);
+    // OpenFOAM's would read the parcels' copy
+    typedef VoidageDragForce<kinematicCloudType> dragType;
+    const wordList valid
+    {
+        dragType::typeName,
+        GasPressureGradientForce<kinematicCloudType>::typeName,
+        WeightForce<kinematicCloudType>::typeName
+    };
+    forAll(owner.forces(), fi)
+    {
+        const word type(owner.forces()[fi].type());
+        if (isA<dragType>(owner.forces()[fi]))
+        {
+            drag_ = &refCast<const dragType>(owner.forces()[fi]);
+        }
+        if (!valid.found(type))
+        {
+            FatalIOErrorInFunction(owner.particleProperties())
+                << "particleForces " << type << " in "
+                << owner.particleProperties().name() << ": the DEM engine"
+                << " holds the particles' state and takes only the DEM"
+                << " cloud's forces" << nl << nl
+                << "Valid particleForces are" << nl << valid
+                << exit(FatalIOError);
+        }
+    }
+}
 
 
 template<class CloudType>
@@ -20,39 +52,6 @@ bool Foam::DEMGasCoupling<CloudType>::heatImplicit() const
         owner_.solution().coupled()
      && owner_.solution().semiImplicit("h")
      && owner_.heatTransfer().active();
-}
-
-
-template<class CloudType>
-template<class TrackCloudType>
-void Foam::DEMGasCoupling<CloudType>::unsupportedForce
-(
-    TrackCloudType& cloud,
-    const parcelType& p,
-    typename parcelType::trackingData& td,
-    const scalar dt
-) const
-{
-    wordList culprits;
-    const scalar m = p.mass();
-    const scalar Re = p.Re(td);
-    forAll(cloud.forces(), fi)
-    {
-        const auto& f = cloud.forces()[fi];
-        if
-        (
-            f.massAdd(p, td, m) != 0
-         || f.calcNonCoupled(p, td, dt, m, Re, td.muc()).Sp() != 0
-        )
-        {
-            culprits.append(f.type());
-        }
-    }
-    FatalIOErrorInFunction(owner_.particleProperties())
-        << "particleForces " << culprits << " in "
-        << owner_.particleProperties().name() << " add mass (virtual mass)"
-        << " or an implicit non-coupled force, which the DEM engine does"
-           " not take: remove them" << exit(FatalIOError);
 }
 
 
@@ -82,49 +81,53 @@ void Foam::DEMGasCoupling<CloudType>::start
     (
         engine.nLocal(), implicitHeat, owner_.thermo().thermo().T()
     );
+    const scalar Cp = owner_.constProps().Cp0();
     for (parcelType& p : cloud)
     {
+        // The gas at the parcel (the parcel: its place in the mesh) and
+        // the particle's state (the engine's)
         const label n = p.demIndex();
+        const label celli = p.cell();
+        const vector& U = P.velocity[n];
         p.setCellValues(cloud, td);
-        p.calcDispersion(cloud, td, dt);
+        td.Uc() =
+            cloud.dispersion().update
+            (
+                dt, celli, U, td.Uc(), p.UTurb(), p.tTurb()
+            );
         if (correctSource)
         {
             p.cellValueSourceCorrection(cloud, td, dt);
         }
 
-        const label celli = p.cell();
         const scalar np = p.nParticle();
-        const scalar m = p.mass();
-        const scalar Re = p.Re(td);
-        const forceSuSp Fcp =
+        const scalar m = owner_.mass(p);
+        const scalar Re =
+            parcelType::Re(td.rhoc(), U, td.Uc(), p.d(), td.muc());
+        forceSuSp Fcp =
             cloud.forces().calcCoupled(p, td, dt, m, Re, td.muc());
+        if (drag_)
+        {
+            Fcp += drag_->drag(p, U, td, td.muc());
+        }
         const forceSuSp Fncp =
             cloud.forces().calcNonCoupled(p, td, dt, m, Re, td.muc());
-        // A force that adds mass does so for every parcel: the first
-        // parcel tells
-        if
-        (
-            Fncp.Sp() != 0
-         || (!massChecked_ && cloud.forces().massEff(p, td, m) != m)
-        )
-        {
-            unsupportedForce(cloud, p, td, dt);
-        }
-        massChecked_ = true;
 
-        // Heat with the gas: explicit, the parcel's temperature now;
+        // Heat with the gas: explicit, the particle's temperature now;
         // implicit, its share f = 1 - exp(-h A dt/(m c_p)) and its
-        // temperature at the start, the parcel following the gathered gas
-        // temperature after the gas is solved (correctHeatExchange)
+        // temperature at the start, the particle following the gathered
+        // gas temperature after the gas is solved (correctHeatExchange)
         scalar dhsTrans, hAdt;
-        const scalar Tn = p.T();
+        scalar& T = P.temperature[n];
+        const scalar Tn = T;
         const scalar TgAt = exchange_.gasTemperatureAt(celli, p.position());
-        const scalar Tconv = p.calcGasHeat(cloud, td, dt, dhsTrans, hAdt);
-        const scalar mCp = m*p.Cp();
+        const scalar mCp = m*Cp;
+        const scalar Tconv =
+            p.calcGasHeat(cloud, td, dt, Tn, U, mCp, dhsTrans, hAdt);
         const scalar fraction = exchange_.fraction(hAdt, mCp);
         if (!implicitHeat)
         {
-            p.T() = Tconv;
+            T = Tconv;
         }
 
         if (coupled)
@@ -142,14 +145,11 @@ void Foam::DEMGasCoupling<CloudType>::start
             owner_.hsCoeff().field()
         );
 
-        // The position after tracking; the velocity too (a patch that is
-        // not a DEM wall, e.g. a rebound outlet, may have changed it)
+        // The position after tracking
         P.position[n] = p.position();
-        P.velocity[n] = p.U();
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();
-        P.temperature[n] = p.T();
         if (tkappa.valid())
         {
             P.gasConductivity[n] = tkappa()[celli];
@@ -159,17 +159,21 @@ void Foam::DEMGasCoupling<CloudType>::start
 
 
 template<class CloudType>
-bool Foam::DEMGasCoupling<CloudType>::leaves(parcelType& p)
+bool Foam::DEMGasCoupling<CloudType>::leaves
+(
+    const parcelType& p,
+    demParticles& P
+)
 {
     const label k = p.demIndex();
     if (!exchange_.holds(k))
     {
         return false;
     }
-    p.T() += exchange_.leave
+    P.temperature[k] += exchange_.leave
     (
         k,
-        p.nParticle()*p.mass()*p.Cp(),
+        p.nParticle()*owner_.mass(p)*owner_.constProps().Cp0(),
         owner_.hsTrans().field(),
         owner_.hsCoeff().field()
     );
@@ -202,7 +206,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::DEMGasCoupling<CloudType>::Sh
 
 
 template<class CloudType>
-void Foam::DEMGasCoupling<CloudType>::correctHeatExchange()
+void Foam::DEMGasCoupling<CloudType>::correctHeatExchange(demParticles& P)
 {
     if (!heatImplicit())
     {
@@ -216,8 +220,12 @@ void Foam::DEMGasCoupling<CloudType>::correctHeatExchange()
         owner_.thermo().thermo().he(),
         owner_.thermo().thermo().Cp()().primitiveField()
     );
-    for (parcelType& p : owner_)
+    UList<scalar>& T = P.temperature;
+    for (const parcelType& p : owner_)
     {
-        p.T() += exchange_.correction(p.demIndex());
+        if (exchange_.holds(p.demIndex()))
+        {
+            T[p.demIndex()] += exchange_.correction(p.demIndex());
+        }
     }
 }

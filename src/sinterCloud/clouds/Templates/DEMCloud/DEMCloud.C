@@ -194,11 +194,12 @@ void Foam::DEMCloud<CloudType>::updateBedFields()
     vectorField U(this->size());
     scalarField rhoCpd(this->size());
     label i = 0;
+    const scalar Cp = this->constProps().Cp0();
     for (const parcelType& p : *this)
     {
         cell[i] = p.cell();
-        U[i] = p.U();
-        rhoCpd[i] = p.rho()*p.Cp()*p.d()/K;
+        U[i] = velocity(p);
+        rhoCpd[i] = density(p)*Cp*p.d()/K;
         ++i;
     }
     granular_->update(cell, U, rhoCpd);
@@ -256,20 +257,19 @@ void Foam::DEMCloud<CloudType>::motion
         gas_->reorder(newIndex);
     }
 
-    // 4. The gas loses the drag impulse; the results onto the parcels
-    // (temperatures too, with conduction)
+    // 4. The gas loses the drag impulse; each parcel's displacement to
+    // its particle's end position, for the track
     const demParticles& P = engine.particles();
-    const bool conducting = engine.conduction().active();
     for (parcelType& p : cloud)
     {
         gas_->finish(p, P);
-        const label n = p.demIndex();
-        p.displacement() = P.position[n] - p.position();
-        p.U() = P.velocity[n];
-        if (conducting)
-        {
-            p.T() = P.temperature[n];
-        }
+        p.displacement() = P.position[p.demIndex()] - p.position();
+    }
+
+    // OpenFOAM's cloud function objects read the parcels' own fields
+    if (this->functions().size())
+    {
+        parcelsFromEngine();
     }
 
     // A time to be written: the lists are built again from the written
@@ -292,18 +292,48 @@ void Foam::DEMCloud<CloudType>::parcelLeaves
     const bool transfer
 )
 {
-    // Leaving in the step: the heat exchange explicit, and with a
-    // transfer, the particle's state goes with it
-    if (!gas_.valid() || !gas_->leaves(p))
+    // Leaving in the step: the heat exchange explicit, and the particle's
+    // state into the parcel (with a transfer, its contacts too)
+    if (engineIndex(p) < 0 || !gas_.valid())
     {
         return;
     }
+    gas_->leaves(p, collision_->engine().particles());
+    parcelFromEngine(p);
     if (transfer)
     {
         p.statePtr().reset(new demParcelState());
         collision_->stateOf(p.demIndex(), p.statePtr()());
     }
     p.demIndex() = -1;
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::parcelFromEngine(parcelType& p) const
+{
+    const label n = engineIndex(p);
+    if (n < 0)
+    {
+        return;
+    }
+    const demParticles& P = held();
+    p.U() = P.velocity[n];
+    p.T() = P.temperature[n];
+    p.rho() = P.density[n];
+    p.reductionDegree() = P.reductionDegree[n];
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::parcelsFromEngine() const
+{
+    // The parcels are the state's copy for I/O: filling them changes no
+    // physics
+    for (parcelType& p : const_cast<DEMCloud<CloudType>&>(*this))
+    {
+        parcelFromEngine(p);
+    }
 }
 
 
@@ -326,8 +356,52 @@ void Foam::DEMCloud<CloudType>::correctHeatExchange()
 {
     if (gas_.valid())
     {
-        gas_->correctHeatExchange();
+        gas_->correctHeatExchange(collision_->engine().particles());
     }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::info()
+{
+    // KinematicCloud's and ThermoCloud's summary, the sums in the parcels'
+    // order
+    scalar mass = 0, particles = 0, kinetic = 0;
+    vector momentum(Zero);
+    scalar Tmin = GREAT, Tmax = -GREAT;
+    for (const parcelType& p : *this)
+    {
+        const scalar m = this->mass(p);
+        const vector& U = velocity(p);
+        const scalar T = temperature(p);
+        mass += p.nParticle()*m;
+        momentum += p.nParticle()*m*U;
+        particles += p.nParticle();
+        kinetic += p.nParticle()*0.5*m*(U & U);
+        Tmin = min(Tmin, T);
+        Tmax = max(Tmax, T);
+    }
+    reduce(mass, sumOp<scalar>());
+    reduce(momentum, sumOp<vector>());
+    reduce(particles, sumOp<scalar>());
+    reduce(kinetic, sumOp<scalar>());
+    reduce(Tmin, minOp<scalar>());
+    reduce(Tmax, maxOp<scalar>());
+    const label n = returnReduce(this->size(), sumOp<label>());
+
+    Info<< "Cloud: " << this->name() << nl
+        << "    Current number of parcels       = " << n << nl
+        << "    Current mass in system          = " << mass << nl
+        << "    Linear momentum                 = " << momentum << nl
+        << "   |Linear momentum|                = " << mag(momentum) << nl
+        << "    Linear kinetic energy           = " << kinetic << nl
+        << "    Average particle per parcel     = "
+        << (n ? particles/n : 0) << nl;
+    this->injectors().info(Info);
+    this->surfaceFilm().info(Info);
+    this->patchInteraction().info(Info);
+    Info<< "    Temperature min/max             = "
+        << (n ? Tmin : 0) << ", " << (n ? Tmax : 0) << endl;
 }
 
 
@@ -337,6 +411,15 @@ void Foam::DEMCloud<CloudType>::writeFields() const
     // On every processor, parcels or not (collated writes are collective)
     if (collision_.valid())
     {
+        parcelsFromEngine();
         parcelType::writeFields(*this);
     }
+}
+
+
+template<class CloudType>
+void Foam::DEMCloud<CloudType>::writeObjects(objectRegistry& obr) const
+{
+    parcelsFromEngine();
+    CloudType::writeObjects(obr);
 }

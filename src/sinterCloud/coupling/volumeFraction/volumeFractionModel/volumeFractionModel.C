@@ -40,26 +40,6 @@ Foam::autoPtr<Foam::volumeFractionModel> Foam::volumeFractionModel::New
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::volumeFractionModel::theta
-(
-    const basicSinterCloud& cloud
-) const
-{
-    UPtrList<const particle> parcels(cloud.size());
-    scalarField solidVolume(cloud.size());
-
-    label i = 0;
-    for (const basicSinterParcel& p : cloud)
-    {
-        parcels.set(i, &p);
-        solidVolume[i] = p.nParticle()*p.volume();
-        ++i;
-    }
-
-    return theta(parcels, solidVolume);
-}
-
-
 Foam::tmp<Foam::vectorField> Foam::volumeFractionModel::pointValues
 (
     const vectorField& cellValues

@@ -10,35 +10,36 @@ Foam::scalar Foam::DEMParcel<ParcelType>::calcGasHeat
     TrackCloudType& cloud,
     trackingData& td,
     const scalar dt,
+    const scalar T,
+    const vector& U,
+    const scalar mCp,
     scalar& dhsTrans,
     scalar& hAdt
-)
+) const
 {
     dhsTrans = 0;
     hAdt = 0;
     if (!cloud.convection())
     {
-        return this->T();
+        return T;
     }
 
     scalar Ts, rhos, mus, Pr, kappas;
-    this->calcSurfaceValues(cloud, td, this->T(), Ts, rhos, mus, Pr, kappas);
+    this->calcSurfaceValues(cloud, td, T, Ts, rhos, mus, Pr, kappas);
     const scalar hA =
         cloud.convection()->conductance
         (
-            this->cell(), this->d(), mag(td.Uc() - this->U()),
+            this->cell(), this->d(), mag(td.Uc() - U),
             rhos, mus, kappas, Pr
         );
 
     // m c_p dT/dt = h A (T_g - T), T_g held: analytically
-    const scalar mCp = this->mass()*this->Cp();
     const scalar b = hA/mCp;
-    const scalar deltaT =
-        cloud.TIntegrator().delta(this->T(), dt, b*td.Tc(), b);
+    const scalar deltaT = cloud.TIntegrator().delta(T, dt, b*td.Tc(), b);
     const scalar Tnew =
         min
         (
-            max(this->T() + deltaT, cloud.constProps().TMin()),
+            max(T + deltaT, cloud.constProps().TMin()),
             cloud.constProps().TMax()
         );
 
@@ -85,13 +86,19 @@ bool Foam::DEMParcel<ParcelType>::move
 
         if (p.onFace() && ttd.keepParticle)
         {
-            // A patch that is not a DEM wall (e.g. a rebound outlet) may
-            // change the velocity: the rest of the step then follows it
+            // A patch that is not a DEM wall (e.g. a rebound outlet) reads
+            // the parcel's fields and may change its velocity: the rest of
+            // the step, and the engine's particle, then follow it
+            if (p.onBoundaryFace())
+            {
+                cloud.parcelFromEngine(p);
+            }
             const vector U0 = p.U();
             p.hitFace(displacement_, cloud, ttd);
             if (p.U() != U0)
             {
                 displacement_ = trackTime*p.U();
+                cloud.parcelVelocityToEngine(p);
             }
         }
     }

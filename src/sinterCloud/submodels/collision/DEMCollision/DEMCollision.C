@@ -557,6 +557,8 @@ void Foam::DEMCollision<CloudType>::syncParticles()
             Q.position[n] = p.position();
             Q.velocity[n] = p.U();
             Q.setSphere(n, 0.5*p.d(), p.rho());
+            Q.temperature[n] = p.T();
+            Q.reductionDegree[n] = p.reductionDegree();
             Q.identity[n] = p.identity();
             if (const demParcelState* st = p.state())
             {

@@ -109,19 +109,17 @@ void Foam::VoidageDragForce<CloudType>::cacheFields(const bool store)
 
 
 template<class CloudType>
-Foam::forceSuSp Foam::VoidageDragForce<CloudType>::calcCoupled
+Foam::forceSuSp Foam::VoidageDragForce<CloudType>::drag
 (
     const typename CloudType::parcelType& p,
+    const vector& U,
     const typename CloudType::parcelType::trackingData& td,
-    const scalar dt,
-    const scalar mass,
-    const scalar Re,
     const scalar muc
 ) const
 {
     const scalar eps = voidage_[p.cell()];
     const scalar dp = p.d()/K_;
-    const scalar slip = mag(td.Uc() - p.U());
+    const scalar slip = mag(td.Uc() - U);
 
     // <d> of the parcel's cell (0 where no parcel reached it: dp is used)
     const scalar dMean = dSauter_.size() ? dSauter_[p.cell()] : 0;
