@@ -207,14 +207,13 @@ int main(int argc, char *argv[])
             << "collisionVelocities is empty: give at least one v_n [m/s]"
             << exit(FatalIOError);
     }
-    for (const scalar v : vn)
+    forAll(vn, i)
     {
-        if (!(v > 0))
-        {
-            FatalIOErrorInFunction(mapDict)
-                << "collisionVelocities " << vn << ": every v_n must be > 0"
-                << exit(FatalIOError);
-        }
+        keywordRange::checkElement
+        (
+            mapDict, "collisionVelocities", "element " + std::to_string(i),
+            vn[i], 0, GREAT, "a normal collision velocity v_n [m/s]", true
+        );
     }
 
     const scalar Tmin(keywordRange::positive(mapDict, "Tmin", "[K]"));

@@ -338,15 +338,24 @@ int main(int argc, char *argv[])
     const scalar rhoP =
         keywordRange::positive(dict.subDict("particles"), "rho", "[kg/m^3]");
     const scalar g = dict.lookupOrDefault<scalar>("g", 9.81);
-    const scalar eps =
-        args.found("epsilonMf")
-      ? args.get<scalar>("epsilonMf")
-      : dict.lookupOrDefault<scalar>("epsilonMf", 0.4);
-    if (!(eps > 0 && eps < 1))
+    const char* epsWhat = "the bed voidage at minimum fluidization [-]";
+    scalar eps = 0;
+    if (args.found("epsilonMf"))
     {
-        FatalIOErrorInFunction(dict)
-            << "epsilonMf " << eps << " must lie in (0, 1)"
-            << exit(FatalIOError);
+        eps = args.get<scalar>("epsilonMf");
+        if (!(eps > 0 && eps < 1))
+        {
+            FatalErrorInFunction
+                << "Option -epsilonMf must lie in (0, 1), not " << eps << ": "
+                << epsWhat << exit(FatalError);
+        }
+    }
+    else
+    {
+        eps = keywordRange::getOrDefault
+        (
+            dict, "epsilonMf", 0.4, 0, 1, epsWhat, true, true
+        );
     }
     if (!(g > 0) || !(rhoP > rhoGas))
     {

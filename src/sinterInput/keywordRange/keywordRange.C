@@ -32,6 +32,42 @@ std::string shortNumber(const Foam::scalar x)
     return s;
 }
 
+
+//- Whether value lies in the range
+bool inside
+(
+    const Foam::scalar value,
+    const Foam::scalar lo,
+    const Foam::scalar hi,
+    const bool openLow,
+    const bool openHigh
+)
+{
+    const bool above = openLow ? value > lo : value >= lo;
+    const bool below =
+        !(hi < Foam::GREAT) || (openHigh ? value < hi : value <= hi);
+    return above && below;
+}
+
+
+//- "must lie in [lo, hi]" or "must be > lo"
+std::string rangeText
+(
+    const Foam::scalar lo,
+    const Foam::scalar hi,
+    const bool openLow,
+    const bool openHigh
+)
+{
+    if (hi < Foam::GREAT)
+    {
+        return
+            "must lie in " + std::string(openLow ? "(" : "[")
+          + shortNumber(lo) + ", " + shortNumber(hi) + (openHigh ? ")" : "]");
+    }
+    return "must be " + std::string(openLow ? "> " : ">= ") + shortNumber(lo);
+}
+
 } // End anonymous namespace
 
 
@@ -49,28 +85,31 @@ void Foam::keywordRange::check
     const bool openHigh
 )
 {
-    const bool bounded = hi < GREAT;
-    const bool above = openLow ? value > lo : value >= lo;
-    const bool below = !bounded || (openHigh ? value < hi : value <= hi);
-    if (above && below)
+    checkElement(dict, key, "", value, lo, hi, what, openLow, openHigh);
+}
+
+
+void Foam::keywordRange::checkElement
+(
+    const dictionary& dict,
+    const word& key,
+    const std::string& element,
+    const scalar value,
+    const scalar lo,
+    const scalar hi,
+    const std::string& what,
+    const bool openLow,
+    const bool openHigh
+)
+{
+    if (inside(value, lo, hi, openLow, openHigh))
     {
         return;
     }
-
-    std::string range;
-    if (bounded)
-    {
-        range =
-            "must lie in " + std::string(openLow ? "(" : "[")
-          + shortNumber(lo) + ", " + shortNumber(hi) + (openHigh ? ")" : "]");
-    }
-    else
-    {
-        range = "must be " + std::string(openLow ? "> " : ">= ")
-          + shortNumber(lo);
-    }
     FatalIOErrorInKeyword(dict, key)
-        << "Keyword " << key << " in " << dict.name() << ' ' << range.c_str()
+        << "Keyword " << key << " in " << dict.name()
+        << (element.empty() ? std::string(" ") : ": " + element + ' ').c_str()
+        << rangeText(lo, hi, openLow, openHigh).c_str()
         << ", not " << value << (what.empty() ? "" : ": ") << what.c_str()
         << exit(FatalIOError);
 }

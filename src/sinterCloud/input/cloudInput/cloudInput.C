@@ -104,7 +104,7 @@ void Foam::cloudInput::checkSizeDistribution
     const dictionary& coeffs = sizeDict.optionalSubDict(type + "Distribution");
 
     // An optional size, > 0 (0 without it)
-    auto positive = [&](const word& key)
+    auto optionalSize = [&](const word& key)
     {
         scalar v = 0;
         if (coeffs.readIfPresent(key, v))
@@ -117,8 +117,8 @@ void Foam::cloudInput::checkSizeDistribution
         }
         return v;
     };
-    const scalar dMin = positive("minValue");
-    const scalar dMax = positive("maxValue");
+    const scalar dMin = optionalSize("minValue");
+    const scalar dMax = optionalSize("maxValue");
     const bool range = coeffs.found("minValue") && coeffs.found("maxValue");
     if (range && !(dMin < dMax))
     {
@@ -128,10 +128,10 @@ void Foam::cloudInput::checkSizeDistribution
             << sizes(dMax, K).c_str()
             << exit(FatalIOError);
     }
-    positive("d");      // RosinRammler's size scale
+    optionalSize("d");  // RosinRammler's size scale
     for (const word key : {"expectation", "value"})
     {
-        const scalar d = positive(key);
+        const scalar d = optionalSize(key);
         if (range && coeffs.found(key) && (d < dMin || d > dMax))
         {
             FatalIOErrorInKeyword(coeffs, key)
@@ -184,20 +184,17 @@ void Foam::cloudInput::checkSubModels
         const patchInteractionDataList patches(mesh, *localPtr);
         for (const patchInteractionData& pd : patches)
         {
-            if (!(pd.e() >= 0 && pd.e() <= 1))
-            {
-                FatalIOErrorInFunction(*localPtr)
-                    << "Patch interaction " << pd.patchName() << " in "
-                    << localPtr->name() << ": e = " << pd.e()
-                    << " must be in [0, 1]" << exit(FatalIOError);
-            }
-            if (!(pd.mu() >= 0))
-            {
-                FatalIOErrorInFunction(*localPtr)
-                    << "Patch interaction " << pd.patchName() << " in "
-                    << localPtr->name() << ": mu = " << pd.mu()
-                    << " must be >= 0" << exit(FatalIOError);
-            }
+            const std::string of(" of patch " + pd.patchName());
+            keywordRange::checkElement
+            (
+                *localPtr, "patches", "e" + of, pd.e(), 0, 1,
+                "the restitution coefficient e of the normal velocity [-]"
+            );
+            keywordRange::checkElement
+            (
+                *localPtr, "patches", "mu" + of, pd.mu(), 0, GREAT,
+                "the share mu of the tangential velocity the patch takes [-]"
+            );
         }
     }
 

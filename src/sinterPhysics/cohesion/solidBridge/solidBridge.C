@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "solidBridge.H"
+#include "keywordRange.H"
 #include "mathematicalConstants.H"
 #include "keywordSource.H"
 
@@ -72,11 +73,12 @@ Foam::solidBridge::solidBridge
     else if (t.isNumber())
     {
         C_ = t.number();
-        if (C_ < 0)
-        {
-            FatalIOErrorInKeyword(dict, "C")
-                << "C " << C_ << " must be >= 0" << exit(FatalIOError);
-        }
+        keywordRange::check
+        (
+            dict, "C", C_, 0, GREAT,
+            "the surface model's coefficient C of eq 2.4 [-] (or one of "
+          + std::string("threeMicroContacts, smooth, nineMicroContacts)")
+        );
     }
     else
     {

@@ -108,13 +108,11 @@ Foam::reductionLaws::HancockSharp::HancockSharp(const dictionary& dict)
     }
     forAll(n_, i)
     {
-        if (!(n_[i] > 0 && n_[i] <= 10))
-        {
-            FatalIOErrorInKeyword(dict, "n")
-                << "Keyword n in " << dict.name() << " is the Avrami"
-                << " exponent and must lie in (0, 10], not " << n_[i]
-                << exit(FatalIOError);
-        }
+        keywordRange::checkElement
+        (
+            dict, "n", n_.size() > 1 ? "pair " + std::to_string(i) : "n",
+            n_[i], 0, 10, "the Avrami exponent [-]", true
+        );
     }
 }
 

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "ironOxidePath.H"
+#include "keywordRange.H"
 #include "keywordSource.H"
 
 // * * * * * * * * * * * * * * * Local constants * * * * * * * * * * * * * //
@@ -71,16 +72,13 @@ Foam::ironOxidePath::ironOxidePath(const dictionary& dict)
     ironOxidePath(dict.get<scalar>("ironContent"))
 {
     // A little beyond the pure phases' 0.69943 and 0.72360 for rounding
-    if (!(W0_ >= WFe2O3 - 1e-4 && W0_ <= WFe3O4 + 1e-4))
-    {
-        FatalIOErrorInKeyword(dict, "ironContent")
-            << "Keyword ironContent in " << dict.name() << " is the iron"
-            << " mass fraction W0(TFe) of a hematite-magnetite powder and"
-            << " must lie in [" << WFe2O3 << ", " << WFe3O4 << "] (Fe2O3 to"
-            << " Fe3O4), not " << W0_
-            << (W0_ > 1 ? " (a mass fraction, not a percentage)" : "")
-            << exit(FatalIOError);
-    }
+    keywordRange::check
+    (
+        dict, "ironContent", W0_, WFe2O3 - 1e-4, WFe3O4 + 1e-4,
+        "the iron mass fraction W0(TFe) of a hematite-magnetite powder,"
+        " Fe2O3 to Fe3O4"
+      + std::string(W0_ > 1 ? " (a mass fraction, not a percentage)" : "")
+    );
 }
 
 
