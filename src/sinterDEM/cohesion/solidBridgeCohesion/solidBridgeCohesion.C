@@ -199,7 +199,7 @@ Foam::cohesionModels::solidBridge::solidBridge
         readChoice
         (
             coeffs_, "coarseGraining", coarseGrainingRuleNames,
-            coarseGrainingRule::contactTime
+            coarseGrainingRule::stress
         )
     ),
     forceScale_(std::pow(K_, forceExponent(coarseGraining_))),
