@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 sinterFoam developers
+/*
+Application
+    bedDecomposition
+
+Group
+    sinterFoam/utilities
+
+Description
+    A decomposition of the mesh that balances the parcels, not the cells.
+
+    In a fluidized bed the parcels carry the work (the DEM sub-steps and
+    the contacts) and sit in the lower part of the column; a decomposition
+    of the cells (simple, scotch on uniform weights) gives the subdomains
+    equal cells and unequal parcels. This utility reads the parcels of a
+    cloud at a time (a settled or bubbling bed), weighs each cell by
+
+        w_c = 1 + parcelWeight n_c
+
+    (n_c the parcels in cell c, parcelWeight the cost of a parcel against
+    that of a gas cell), decomposes the mesh with these weights by the
+    method named, and writes the result as constant/<dataFile>, the cell
+    list that decomposePar reads with method manual:
+
+        method          manual;
+        manualCoeffs    { dataFile "cellDecomposition"; }
+
+    The default method is hierarchical with n = (nx ny 1) (nx ny = N, ny
+    the largest factor of N not above its square root): the column is cut
+    in x into nx slabs of equal weight, each slab in y into ny: vertical
+    cuts only, so that the bubbles and the parcels they carry, which rise
+    and fall, cross no boundary on their way. (simple cuts x and y each
+    once for the whole mesh and leaves the parcels of its pieces unequal
+    beyond 2 subdomains. Debian's OpenFOAM ships scotch and metis as
+    stubs; with a real scotch, -method scotch balances the same weights
+    with fewest cut faces.)
+
+    It prints, for the decomposition of system/decomposeParDict as it
+    stands and for the weighted one: per subdomain the cells, the parcels
+    and the halo parcels (the parcels in the cells of other subdomains
+    that share a face with one of its cells: the ghosts it will receive,
+    when the cells are about a contact range wide), and the largest over
+    the mean of each. A bed that moves during a run unbalances again: the
+    utility run on a later time of the run and decomposePar again
+    (reconstructPar first) re-balance it at a restart.
+
+Usage
+    bedDecomposition [-time T] [-subdomains N] [-method hierarchical]
+                     [-n "(4 2 1)"] [-parcelWeight 20] [-cloud cloud]
+                     [-dataFile F] [-noWrite]
+
+    \table
+        Option        | Description                                   | Default
+        -time         | the time of the parcels                       | latest
+        -subdomains   | number of subdomains, >= 1                    | numberOfSubdomains of decomposeParDict
+        -method       | a method that balances weights: hierarchical, simple (or scotch where it is not a stub) | hierarchical
+        -n            | the cuts of hierarchical and simple, nx ny nz = N | (nx ny 1), nx ny = N
+        -parcelWeight | a parcel's cost against a cell's [-], >= 0    | 20
+        -cloud        | the cloud's name                              | the only cloud at that time
+        -dataFile     | the file written in constant/                 | cellDecomposition
+        -noWrite      | report only                                   | off
+    \endtable
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "timeSelector.H"
+#include "Time.H"
+#include "polyMesh.H"
+#include "IOdictionary.H"
+#include "labelIOList.H"
+#include "passiveParticleCloud.H"
+#include "decompositionMethod.H"
+#include "OSspecific.H"
+#include "IOmanip.H"
+
+using namespace Foam;
+
+namespace
+{
+
+//- Parcels per cell of a cloud at the mesh's current time
+labelList parcelsPerCell(const polyMesh& mesh, const word& cloudName)
+{
+    passiveParticleCloud cloud(mesh, cloudName, false);
+    labelList n(mesh.nCells(), 0);
+    for (const passiveParticle& p : cloud)
+    {
+        ++n[p.cell()];
+    }
+    return n;
+}
+
+
+//- The name of the only cloud at the current time, or a fatal error
+word onlyCloud(const polyMesh& mesh)
+{
+    const fileName dir(mesh.time().timePath()/cloud::prefix);
+    const fileNameList clouds(readDir(dir, fileName::DIRECTORY));
+    if (clouds.size() != 1)
+    {
+        FatalErrorInFunction
+            << "Found " << clouds.size() << " clouds in " << dir
+            << ": name one with -cloud. Clouds there: " << clouds
+            << exit(FatalError);
+    }
+    return clouds[0];
+}
+
+
+//- Cells, parcels and halo parcels per subdomain, and max/mean of each
+void report
+(
+    const word& what,
+    const polyMesh& mesh,
+    const labelList& domain,
+    const label nDomains,
+    const labelList& parcels
+)
+{
+    labelList cells(nDomains, 0), own(nDomains, 0), halo(nDomains, 0);
+    forAll(domain, celli)
+    {
+        ++cells[domain[celli]];
+        own[domain[celli]] += parcels[celli];
+    }
+
+    // The cells of other subdomains next to each subdomain, each once
+    List<labelHashSet> haloCells(nDomains);
+    const labelList& owner = mesh.faceOwner();
+    const labelList& neighbour = mesh.faceNeighbour();
+    forAll(neighbour, facei)
+    {
+        const label a = owner[facei], b = neighbour[facei];
+        if (domain[a] != domain[b])
+        {
+            haloCells[domain[a]].insert(b);
+            haloCells[domain[b]].insert(a);
+        }
+    }
+    forAll(haloCells, d)
+    {
+        for (const label celli : haloCells[d])
+        {
+            halo[d] += parcels[celli];
+        }
+    }
+
+    auto imbalance = [nDomains](const labelList& v)
+    {
+        const scalar mean = scalar(sum(v))/nDomains;
+        return mean > 0 ? max(v)/mean : 1.0;
+    };
+
+    Info<< what << nl
+        << "    subdomain      cells    parcels  halo parcels" << nl;
+    forAll(cells, d)
+    {
+        Info<< "    " << setw(9) << d << setw(11) << cells[d]
+            << setw(11) << own[d] << setw(14) << halo[d] << nl;
+    }
+    auto fixed3 = [](const scalar x)
+    {
+        return word(std::to_string(std::round(x*1000)/1000).substr(0, 5));
+    };
+    Info<< "    max/mean  " << setw(11) << fixed3(imbalance(cells))
+        << setw(11) << fixed3(imbalance(own))
+        << setw(14) << fixed3(imbalance(halo)) << nl
+        << "    parcels in halos over all parcels: "
+        << fixed3(sum(own) > 0 ? scalar(sum(halo))/sum(own) : 0.0) << nl
+        << endl;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Decompose the mesh so that the subdomains hold equal parcels:"
+        " writes constant/cellDecomposition for decomposePar's manual"
+        " method"
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    timeSelector::addOptions(false, false);
+    argList::addOption("subdomains", "N", "number of subdomains");
+    argList::addOption("method", "name", "the weighted method (hierarchical)");
+    argList::addOption("n", "(nx ny nz)", "the method's cuts ((nx ny 1))");
+    argList::addOption
+    (
+        "parcelWeight", "w", "a parcel's cost against a cell's (20)"
+    );
+    argList::addOption("cloud", "name", "the cloud (the only one)");
+    argList::addOption
+    (
+        "dataFile", "name", "file written in constant/ (cellDecomposition)"
+    );
+    argList::addBoolOption("noWrite", "report only");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    instantList times = timeSelector::select0(runTime, args);
+    runTime.setTime(times.last(), times.size() - 1);
+
+    polyMesh mesh
+    (
+        IOobject
+        (
+            polyMesh::defaultRegion,
+            runTime.timeName(),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
+
+    IOdictionary decomposeDict
+    (
+        IOobject
+        (
+            "decomposeParDict",
+            runTime.system(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    const label nDomains =
+        args.found("subdomains")
+      ? args.get<label>("subdomains")
+      : decomposeDict.get<label>("numberOfSubdomains");
+    if (nDomains < 1)
+    {
+        FatalErrorInFunction
+            << "Option -subdomains of bedDecomposition must be >= 1, not "
+            << nDomains << exit(FatalError);
+    }
+    const scalar parcelWeight = args.getOrDefault<scalar>("parcelWeight", 20);
+    if (!(parcelWeight >= 0))
+    {
+        FatalErrorInFunction
+            << "Option -parcelWeight of bedDecomposition must be >= 0, not "
+            << parcelWeight << ": a parcel's cost against a gas cell's"
+            << exit(FatalError);
+    }
+    const word methodName(args.getOrDefault<word>("method", "hierarchical"));
+    Vector<label> n(nDomains, 1, 1);
+    if (args.found("n"))
+    {
+        n = args.get<Vector<label>>("n");
+        if (n.x()*n.y()*n.z() != nDomains || min(n.x(), min(n.y(), n.z())) < 1)
+        {
+            FatalErrorInFunction
+                << "Option -n of bedDecomposition: " << n << " must be"
+                << " positive with a product of " << nDomains
+                << " (the subdomains)" << exit(FatalError);
+        }
+    }
+    else
+    {
+        // nx ny = N with ny the largest factor of N not above sqrt(N)
+        for (label ny = 1; ny*ny <= nDomains; ++ny)
+        {
+            if (nDomains % ny == 0)
+            {
+                n = Vector<label>(nDomains/ny, ny, 1);
+            }
+        }
+    }
+    const word cloudName
+    (
+        args.found("cloud") ? args.get<word>("cloud") : onlyCloud(mesh)
+    );
+    const fileName dataFile
+    (
+        args.getOrDefault<fileName>("dataFile", "cellDecomposition")
+    );
+
+    const labelList parcels(parcelsPerCell(mesh, cloudName));
+    Info<< "Cloud " << cloudName << " at " << runTime.timeName() << " s: "
+        << sum(parcels) << " parcels in " << mesh.nCells() << " cells; "
+        << nDomains << " subdomains" << nl << endl;
+
+    // The decomposition of decomposeParDict as it stands, for comparison
+    {
+        dictionary asIs(decomposeDict);
+        const word given(asIs.get<word>("method"));
+        if (nDomains != asIs.get<label>("numberOfSubdomains"))
+        {
+            asIs.set("numberOfSubdomains", nDomains);
+            // A split in one direction, along x, as the tutorials' n (2 1 1)
+            for (const word& c : {word("coeffs"), word(given + "Coeffs")})
+            {
+                if (asIs.isDict(c) && asIs.subDict(c).found("n"))
+                {
+                    asIs.subDict(c).set("n", Vector<label>(nDomains, 1, 1));
+                    Info<< "decomposeParDict: " << c << " n set to ("
+                        << nDomains << " 1 1) for " << nDomains
+                        << " subdomains" << nl;
+                }
+            }
+        }
+        if (given == "manual")
+        {
+            Info<< "decomposeParDict: method manual (this utility's own"
+                << " result or another): not compared" << nl << endl;
+        }
+        else
+        {
+            autoPtr<decompositionMethod> m(decompositionMethod::New(asIs));
+            report
+            (
+                "decomposeParDict as it stands (method " + given
+              + ", cells unweighted):",
+                mesh, m->decompose(mesh, mesh.cellCentres()), nDomains,
+                parcels
+            );
+        }
+    }
+
+    // The parcels' weights
+    scalarField weights(mesh.nCells(), 1);
+    forAll(weights, celli)
+    {
+        weights[celli] += parcelWeight*parcels[celli];
+    }
+
+    dictionary weighted(decomposeDict);
+    weighted.set("numberOfSubdomains", nDomains);
+    weighted.set("method", methodName);
+    {
+        dictionary coeffs;
+        coeffs.set("n", n);
+        coeffs.set("order", word("xyz"));
+        weighted.set("coeffs", coeffs);
+        weighted.remove(methodName + "Coeffs");
+    }
+    autoPtr<decompositionMethod> method(decompositionMethod::New(weighted));
+    const labelList domain
+    (
+        method->decompose(mesh, mesh.cellCentres(), weights)
+    );
+    report
+    (
+        "Weighted by the parcels (method " + methodName + ", n "
+      + Foam::name(n) + ", cell weight 1 + " + Foam::name(parcelWeight)
+      + " x parcels):",
+        mesh, domain, nDomains, parcels
+    );
+
+    if (!args.found("noWrite"))
+    {
+        labelIOList out
+        (
+            IOobject
+            (
+                dataFile,
+                mesh.facesInstance(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            domain
+        );
+        out.write();
+        Info<< "Wrote " << out.objectPath() << nl
+            << "decomposePar reads it with, in system/decomposeParDict:"
+            << nl << "    numberOfSubdomains " << nDomains << ';' << nl
+            << "    method          manual;" << nl
+            << "    manualCoeffs    { dataFile " << dataFile << "; }"
+            << nl << endl;
+    }
+
+    Info<< "End" << nl << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
