@@ -41,14 +41,15 @@ Description
     and the halo parcels (the parcels in the cells of other subdomains
     that share a face with one of its cells: the ghosts it will receive,
     when the cells are about a contact range wide), and the largest over
-    the mean of each. A bed that moves during a run unbalances again: the
-    utility run on a later time of the run and decomposePar again
-    (reconstructPar first) re-balance it at a restart.
+    the mean of each. A bed that moves during a run unbalances again:
+    -evaluate reports a written decomposition on the parcels of later
+    times (the drift), and the utility run on a later time and
+    decomposePar again (reconstructPar first) re-balance it at a restart.
 
 Usage
     bedDecomposition [-time T] [-subdomains N] [-method hierarchical]
                      [-n "(4 2 1)"] [-parcelWeight 20] [-cloud cloud]
-                     [-dataFile F] [-noWrite]
+                     [-dataFile F] [-noWrite] [-evaluate]
 
     \table
         Option        | Description                                   | Default
@@ -60,6 +61,7 @@ Usage
         -cloud        | the cloud's name                              | the only cloud at that time
         -dataFile     | the file written in constant/                 | cellDecomposition
         -noWrite      | report only                                   | off
+        -evaluate     | report the balance of constant/<dataFile> on the parcels of every time selected (-time 1:3) | off
     \endtable
 
 \*---------------------------------------------------------------------------*/
@@ -199,6 +201,12 @@ int main(int argc, char *argv[])
         "dataFile", "name", "file written in constant/ (cellDecomposition)"
     );
     argList::addBoolOption("noWrite", "report only");
+    argList::addBoolOption
+    (
+        "evaluate",
+        "report constant/<dataFile>'s balance on the parcels of every time"
+        " selected (a drift as the bed moves)"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -280,6 +288,45 @@ int main(int argc, char *argv[])
     (
         args.getOrDefault<fileName>("dataFile", "cellDecomposition")
     );
+
+    // An existing decomposition on the parcels of each time selected
+    if (args.found("evaluate"))
+    {
+        const labelIOList domain
+        (
+            IOobject
+            (
+                dataFile,
+                mesh.facesInstance(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        if (domain.size() != mesh.nCells() || min(domain) < 0)
+        {
+            FatalErrorInFunction
+                << "The decomposition " << domain.objectPath() << " has "
+                << domain.size() << " entries from " << min(domain)
+                << ": it needs one subdomain >= 0 for each of the mesh's "
+                << mesh.nCells() << " cells" << exit(FatalError);
+        }
+        const label nDom = max(domain) + 1;
+        for (const instant& t : times)
+        {
+            runTime.setTime(t, 0);
+            report
+            (
+                "The decomposition " + dataFile + " (" + Foam::name(nDom)
+              + " subdomains) on the parcels at " + runTime.timeName()
+              + " s:",
+                mesh, domain, nDom, parcelsPerCell(mesh, cloudName)
+            );
+        }
+        Info<< "End" << nl << endl;
+        return 0;
+    }
 
     const labelList parcels(parcelsPerCell(mesh, cloudName));
     Info<< "Cloud " << cloudName << " at " << runTime.timeName() << " s: "
