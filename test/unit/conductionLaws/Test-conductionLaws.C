@@ -25,7 +25,8 @@ Description
     - lensSolidSeries (the lens with the particle's solid in series): the
       closed form against a quadrature of its integral at k_s/k_f = 54
       (glass in air), 5, 1.0005 (its series branch) and 0.5, from a gap of
-      0.3 r_p to an overlap, relative 1e-8; k_s = k_f against the slab
+      0.15 r_p to an overlap (inside the lens of 1.2 r_p), relative 1e-8;
+      zero beyond the lens (gaps 0.2 and 0.3 r_p); k_s = k_f against the slab
       (r_out^2 - r_in^2)/(2 D), relative 1e-12; k_s -> infinity against
       Rong-Horio where its gap exceeds s, relative 1e-9; continuous across
       its switch to the series, relative 1e-9; finite at contact; two
@@ -334,13 +335,37 @@ int main(int argc, char *argv[])
             return simpsonF(rIn, rMid, 200000) + simpsonF(rMid, rOut, 200000);
         };
 
+        // Gaps inside the lens (r + gap < r_lens = 1.2 r): the quadrature
+        // has something to integrate
         const scalar gaps[] =
-            {0.3*r, 0.05*r, 0.002*r, 1e-7, 0, -0.002*r, -0.02*r};
+            {0.15*r, 0.05*r, 0.002*r, 1e-7, 0, -0.002*r, -0.02*r};
         for (const scalar ratio : {54.0, 5.0, 1.0005, 0.5})
         {
             const scalar beta = 1 - 1/ratio;
+            // Beyond the lens (r + gap >= r_lens) the gas bridges nothing
+            for (const scalar g : {0.2*r, 0.3*r})
+            {
+                check
+                (
+                    "lensSolidSeries, k_s/k_f " + Foam::name(ratio)
+                  + ", gap " + Foam::name(g) + " m, beyond the lens: zero",
+                    indirectConductions::lensSolidSeries::integral
+                    (
+                        r, g, lens, beta
+                    ),
+                    0,
+                    0
+                );
+            }
             for (const scalar g : gaps)
             {
+                if (!(quadrature(kf*ratio, g) > 0))
+                {
+                    FatalErrorInFunction
+                        << "gap " << g << " lies outside the lens: the"
+                        << " quadrature check would compare nothing"
+                        << exit(FatalError);
+                }
                 check
                 (
                     "lensSolidSeries, k_s/k_f " + Foam::name(ratio)
@@ -369,7 +394,7 @@ int main(int argc, char *argv[])
                 1e-12
             );
         }
-        for (const scalar g : {0.3*r, 0.05*r, 0.002*r})
+        for (const scalar g : {0.15*r, 0.05*r, 0.002*r})
         {
             check
             (
