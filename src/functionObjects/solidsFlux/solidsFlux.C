@@ -80,7 +80,7 @@ Foam::functionObjects::solidsFlux::solidsFlux
     up_(0, 0, 1),
     axisLo_(0),
     axisHi_(0),
-    depth_(0),
+    binVolume_(),
     nSamples_(0)
 {
     read(dict);
@@ -156,21 +156,67 @@ bool Foam::functionObjects::solidsFlux::read(const dictionary& dict)
             << exit(FatalIOError);
     }
     axis_ /= mag(axis_);
-    const vector across = up_ ^ axis_;
 
-    // The mesh's extents along the axis and across it
+    // The mesh's extent along the axis
     const pointField corners(mesh_.bounds().points());
     axisLo_ = GREAT;
     axisHi_ = -GREAT;
-    scalar acrossLo = GREAT, acrossHi = -GREAT;
     for (const point& c : corners)
     {
         axisLo_ = min(axisLo_, c & axis_);
         axisHi_ = max(axisHi_, c & axis_);
-        acrossLo = min(acrossLo, c & across);
-        acrossHi = max(acrossHi, c & across);
     }
-    depth_ = acrossHi - acrossLo;
+
+    // The slab's volume per bin: each cell's volume times the share of its
+    // height in the slab and of its extent along the axis in the bin
+    binVolume_.setSize(nBins_);
+    binVolume_ = Zero;
+    const scalar zLo = height_ - 0.5*thickness_, zHi = height_ + 0.5*thickness_;
+    const scalar w = (axisHi_ - axisLo_)/nBins_;
+    const pointField& points = mesh_.points();
+    const labelListList& cellPoints = mesh_.cellPoints();
+    forAll(cellPoints, celli)
+    {
+        scalar z0 = GREAT, z1 = -GREAT, a0 = GREAT, a1 = -GREAT;
+        for (const label pointi : cellPoints[celli])
+        {
+            const scalar z = points[pointi] & up_;
+            const scalar a = points[pointi] & axis_;
+            z0 = min(z0, z);
+            z1 = max(z1, z);
+            a0 = min(a0, a);
+            a1 = max(a1, a);
+        }
+        const scalar inSlab = min(z1, zHi) - max(z0, zLo);
+        if (!(inSlab > 0) || !(z1 > z0) || !(a1 > a0))
+        {
+            continue;
+        }
+        const scalar v = mesh_.cellVolumes()[celli]*inSlab/(z1 - z0);
+        const label b0 = max(label((a0 - axisLo_)/w), label(0));
+        const label b1 = min(label((a1 - axisLo_)/w), nBins_ - 1);
+        for (label b = b0; b <= b1; ++b)
+        {
+            const scalar lo = axisLo_ + b*w, hi = lo + w;
+            const scalar share = min(a1, hi) - max(a0, lo);
+            if (share > 0)
+            {
+                binVolume_[b] += v*share/(a1 - a0);
+            }
+        }
+    }
+    Pstream::listCombineGather(binVolume_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(binVolume_);
+    if (!(sum(binVolume_) > 0))
+    {
+        FatalIOErrorInKeyword(dict, "height")
+            << "The slab of " << name() << " at height " << height_
+            << " m (thickness " << thickness_ << " m) holds no cell of the"
+            << " mesh" << exit(FatalIOError);
+    }
+    Log << type() << " " << name() << ": the plane's cross-section "
+        << sum(binVolume_)/thickness_ << " m^2 (from the mesh's cells)"
+        << endl;
 
     if (profileSum_.size() != nBins_)
     {
@@ -209,12 +255,17 @@ bool Foam::functionObjects::solidsFlux::execute()
     reduce(downSum, sumOp<scalar>());
     reduce(inSlab, sumOp<label>());
 
-    const scalar slabVolume = (axisHi_ - axisLo_)*depth_*thickness_;
-    const scalar binVolume = slabVolume/nBins_;
+    const scalar slabVolume = sum(binVolume_);
 
     if (mesh_.time().value() >= averageFrom_ - 0.5*mesh_.time().deltaTValue())
     {
-        profileSum_ += binSum/binVolume;
+        forAll(profileSum_, b)
+        {
+            if (binVolume_[b] > 0)
+            {
+                profileSum_[b] += binSum[b]/binVolume_[b];
+            }
+        }
         ++nSamples_;
     }
 
