@@ -86,8 +86,24 @@ void Foam::LatticeBedInjection<CloudType>::place()
     // FCC: the points (i, j, k) a/2 with i + j + k even, a = s sqrt(2)
     const scalar s = (1 + gap_)*dMax_;
     const scalar h = 0.5*s*Foam::sqrt(2.0);
-    const label ni = label((hi.x() - lo.x() - s)/h) + 1;
-    const label nj = label((hi.y() - lo.y() - s)/h) + 1;
+    // A layer's sites are held at once: refuse a region so wide against the
+    // parcels that one layer would not fit in memory
+    const scalar siteRows = max((hi.x() - lo.x() - s)/h, scalar(0)) + 1;
+    const scalar siteCols = max((hi.y() - lo.y() - s)/h, scalar(0)) + 1;
+    const scalar maxLayerSites = 2e7;
+    if (!(0.5*siteRows*siteCols <= maxLayerSites))
+    {
+        FatalIOErrorInFunction(dict)
+            << "The lattice of " << dict.dictName() << " would hold "
+            << 0.5*siteRows*siteCols << " sites per layer (more than "
+            << maxLayerSites << "): the region " << region
+            << " m is too wide for sites " << s << " m apart (the largest"
+            << " parcel diameter, dMax, with the gap). Check the mesh's"
+            << " size and the parcels' (K, d), or fill a smaller box"
+            << " (keyword box)" << exit(FatalIOError);
+    }
+    const label ni = label(siteRows);
+    const label nj = label(siteCols);
     const scalar rho = this->owner().constProps().rho0();
     const scalar mTarget = this->massTotal_;
     const label nProcs = Pstream::nProcs();
