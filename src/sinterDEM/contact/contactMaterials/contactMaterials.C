@@ -262,7 +262,7 @@ void Foam::contactMaterials::checkSame
 
 Foam::dictionary Foam::contactMaterials::read(const objectRegistry& db)
 {
-    return IOdictionary
+    const IOdictionary io
     (
         IOobject
         (
@@ -274,6 +274,10 @@ Foam::dictionary Foam::contactMaterials::read(const objectRegistry& db)
             false
         )
     );
+    // A copy made in the return slot, its sub-dictionaries' parent pointer
+    // on it (a dictionary moved from the IOdictionary would leave them on
+    // the destroyed one, which an error message walks)
+    return dictionary(io);
 }
 
 

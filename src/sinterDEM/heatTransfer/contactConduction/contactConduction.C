@@ -10,7 +10,10 @@ namespace
 
 //- The engine's conduction dictionary (none without one), with the lens
 //  law's minimum distance scaled by K (coarse graining: every length of a
-//  parcel contact scales)
+//  parcel contact scales). Returned as a copy made in the return slot:
+//  OpenFOAM's dictionary move leaves the sub-dictionaries' parent pointers
+//  on the moved-from object, and an error message on a sub-dictionary
+//  (which walks to the top dictionary) then read freed memory.
 Foam::dictionary conductionDict
 (
     const Foam::dictionary& engineDict,
@@ -32,7 +35,7 @@ Foam::dictionary conductionDict
         dictionary& c = d.subDict(coeffs);
         c.set("minimumDistance", K*c.get<scalar>("minimumDistance"));
     }
-    return d;
+    return dictionary(d);
 }
 
 

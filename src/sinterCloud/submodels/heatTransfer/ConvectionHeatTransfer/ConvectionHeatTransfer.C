@@ -31,7 +31,9 @@ Foam::dictionary Foam::ConvectionHeatTransfer<CloudType>::withoutBird
     knownKeywords::check(given, {"law", "voidage", "BirdCorrection"});
     dictionary patched(dict);
     patched.subDict(coeffs).set("BirdCorrection", false);
-    return patched;
+    // A copy made in the return slot: a moved dictionary's sub-dictionaries
+    // keep their parent pointer on the moved-from one
+    return dictionary(patched);
 }
 
 
