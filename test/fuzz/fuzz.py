@@ -34,6 +34,7 @@ import os
 import random
 import re
 import shutil
+import signal
 import subprocess
 import sys
 
@@ -121,14 +122,17 @@ MEMORY_KB = 4000000    # each run's address space: a blow-up fails, not the mach
 
 
 def run(cmd, cwd, log, timeout):
+    """The command's return code, or 'timeout' (its whole process group
+    killed: the shell and what it started)"""
     with open(os.path.join(cwd, log), 'w') as out:
+        p = subprocess.Popen('ulimit -v %d; %s' % (MEMORY_KB, cmd), cwd=cwd,
+                             stdout=out, stderr=subprocess.STDOUT, shell=True,
+                             start_new_session=True)
         try:
-            p = subprocess.run('ulimit -v %d; %s' % (MEMORY_KB, cmd), cwd=cwd,
-                               stdout=out, stderr=subprocess.STDOUT,
-                               timeout=timeout, shell=True,
-                               start_new_session=True)
-            return p.returncode
+            return p.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
             return 'timeout'
 
 
