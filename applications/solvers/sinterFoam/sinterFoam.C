@@ -37,6 +37,12 @@ Description
     sources, and its continuity the oxygen's mass; that mass enters at the
     gas's own enthalpy.
 
+    Checked at the start (named errors, not a trap or a loop without end):
+    the gas's mu, Cp, kappa and rho > 0 (thermophysicalProperties), PIMPLE
+    nOuterCorrectors in [1, 100] (fvSolution), deltaT > 0; every step, the
+    gas's Courant number below CourantLimit (system/controlDict, optional,
+    default 100: a bed runs far below 1).
+
     Data flow of a time step:
         gas -> cloud (move, collide, drag, heat) -> voidage and sources
             -> gas (momentum, energy, pressure)
