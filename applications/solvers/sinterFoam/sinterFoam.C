@@ -53,6 +53,7 @@ Description
 #include "rhoThermo.H"
 #include "SLGThermo.H"
 #include "pimpleControl.H"
+#include "keywordRange.H"
 #include "constrainPressure.H"
 #include "constrainHbyA.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
@@ -82,6 +83,13 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"
+    // The Courant number beyond which a step stops (CourantNo.H): optional,
+    // default 100 (a CFD-DEM bed runs far below 1), read once
+    const scalar CoLimit = keywordRange::getOrDefault
+    (
+        runTime.controlDict(), "CourantLimit", 100, 0, GREAT,
+        "the gas's Courant number beyond which the run stops", true
+    );
     #include "createFields.H"
     writtenTimes::checkParcelsRead(runTime, nWritten, cloud.nParcels());
 
