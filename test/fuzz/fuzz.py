@@ -84,23 +84,27 @@ def candidates(case, src):
 
 
 def mutate(value, kind):
-    """The value as the mutation makes it, or None to remove the entry"""
+    """(the value as the mutation makes it, or None to remove the entry;
+    the mutation made): a numeric mutation of a value without a number
+    becomes a wrong type (times 0: a removal)"""
     if kind == 'missing':
-        return None
+        return None, kind
     if kind == 'wrongType':
-        return 'fuzzValue'
+        return 'fuzzValue', kind
     factor = {'times0': 0.0, 'negate': -1.0, 'times1e6': 1e6,
               'times1e-6': 1e-6}[kind]
     if not NUMBER.search(value):
-        return None if kind == 'times0' else 'fuzzValue'
-    return NUMBER.sub(lambda m: '%.10g' % (float(m.group(1))*factor), value)
+        return (None, 'missing') if kind == 'times0' else ('fuzzValue', 'wrongType')
+    return (NUMBER.sub(lambda m: '%.10g' % (float(m.group(1))*factor), value),
+            kind)
 
 
 def applyMutation(case_dir, rel, lineNo, kind):
+    """Mutate the entry: (the value written, the mutation made)"""
     path = os.path.join(case_dir, rel)
     lines = open(path).read().split('\n')
     m = ENTRY.match(lines[lineNo])
-    new = mutate(m.group(4), kind)
+    new, made = mutate(m.group(4), kind)
     if new is None:
         lines[lineNo] = '// fuzz: removed ' + lines[lineNo].strip()
         shown = '(removed)'
@@ -109,7 +113,7 @@ def applyMutation(case_dir, rel, lineNo, kind):
                                          new, m.group(5))
         shown = new
     open(path, 'w').write('\n'.join(lines))
-    return shown
+    return shown, made
 
 
 def shortRun(case_dir, settings):
@@ -165,7 +169,10 @@ def classify(case_dir, rc, key):
         block = text[fatal.start():][:2000]
         if not first:
             first = block.split('\n')[0][:160]
-        return 'refused', key in block, first
+        # named: the key as a word of the message (not inside another)
+        named = re.search(r'(?<![\w.:])' + re.escape(key) + r'(?![\w:])',
+                          block) is not None
+        return 'refused', named, first
     tail = [l for l in text.strip().split('\n') if l.strip()][-1:] or ['']
     return 'other', False, tail[0][:160]
 
@@ -225,7 +232,7 @@ def main():
         work = os.path.join(a.workdir, '%s-%03d' % (a.case, k))
         shutil.rmtree(work, ignore_errors=True)
         prepare(a.case, src, work)
-        shown = applyMutation(work, rel, lineNo, kind)
+        shown, kind = applyMutation(work, rel, lineNo, kind)
         rc = runCase(a.case, work, a.timeout)
         outcome, named, first = classify(work, rc, key)
         counts[outcome] = counts.get(outcome, 0) + 1
