@@ -76,6 +76,8 @@ Usage
 #include "decompositionMethod.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
+#include <iomanip>
+#include <sstream>
 
 using namespace Foam;
 
@@ -162,9 +164,12 @@ void report
         Info<< "    " << setw(9) << d << setw(11) << cells[d]
             << setw(11) << own[d] << setw(14) << halo[d] << nl;
     }
+    // Three decimals, whatever the magnitude (1.005, 12.345)
     auto fixed3 = [](const scalar x)
     {
-        return word(std::to_string(std::round(x*1000)/1000).substr(0, 5));
+        std::ostringstream os;
+        os << std::fixed << std::setprecision(3) << x;
+        return word(os.str());
     };
     Info<< "    max/mean  " << setw(11) << fixed3(imbalance(cells))
         << setw(11) << fixed3(imbalance(own))
