@@ -30,10 +30,16 @@ Description
     reducedSurface). The collision keeps the oxide's elastic constants.
 
     -calibrate: the tensile strength sigma(T) is the one input the thesis
-    does not tabulate. Given one powder's measured (or reference) T_t and
-    T_d (sub-dictionary calibration), prints the sigma at both temperatures
-    that puts the crossings there, and the curve sigma(T) = a + b T^n
-    (exponent n given) through them as a tensileStrength entry.
+    does not tabulate. Given measured (or reference) T_t and T_d
+    (sub-dictionary calibration), prints sigma(T) = a + b T^n (exponent n
+    given) as a tensileStrength entry: with two temperatures (one powder's
+    T_t and T_d) the curve through the sigma that puts both crossings
+    there, solved exactly; with more (several powders, or conditions, in
+    points), the a and b whose crossings lie closest to the measured
+    temperatures in the least-squares sense (levenbergMarquardt, residual
+    in kelvin: the temperature at which sigma(T) meets the strength the
+    balance needs, nearest the measured one, minus the measured one),
+    with standard errors from the residuals' scatter.
 
 Usage
     defluidizationMap [-dict FILE] [-calibrate]
@@ -50,7 +56,7 @@ Usage
         gravity             | |g| [m/s^2], > 0                            | yes
         gas                 | viscosity [Pa s], density [kg/m^3], voidage [-] of the Ergun drag | yes
         powders             | per powder: d50 [m] > 0; superficialVelocities (u_min u_max) [m/s] of the drag band | yes
-        calibration         | powder, Tt, Td [K], exponent n (only with -calibrate) | -calibrate
+        calibration         | exponent n [-] > 0; powder, Tt, Td [K] in [200, 3000] (Tt < Td), or points ({powder; Tt; Td} ...) with Tt, Td or both each, two temperatures or more in all (only with -calibrate) | -calibrate
         reductionDegrees    | list of X in [0, 1] of the reduced powders   | no (none)
         reducedSurface      | material (in materials) of the iron on reduced surfaces | with reductionDegrees
         surfaceIronExponent | s of the surface iron fraction phi^s (surfaceIron), in (0, 1], default 1 | no
@@ -75,6 +81,9 @@ Usage
 #include "HertzCollision.H"
 #include "ErgunDrag.H"
 #include "numberLiterals.H"
+#include "levenbergMarquardt.H"
+#include "linearLeastSquares.H"
+#include "keywordSource.H"
 
 using namespace Foam;
 
@@ -140,6 +149,270 @@ void printTemperature(const scalar T)
     {
         Info<< "  " << setw(8) << T << " K (" << setw(7) << T - degC << " C)";
     }
+}
+
+// One measured temperature of the calibration: the powder's T_t (v_n the
+// first collision velocity) or T_d (the last)
+struct measured
+{
+    label powder;
+    word what;
+    scalar T;
+    //- The collision's force and contact time at its v_n
+    scalar Fn;
+    scalar tc;
+};
+
+
+//- -calibrate: sigma(T) = a + b T^n (n given) whose force-balance crossings
+//  lie at the measured T_t and T_d, by least squares in temperature
+void calibrate
+(
+    const dictionary& cal,
+    const List<powder>& powders,
+    const sinterMaterial& material,
+    const solidBridge& bridge,
+    const scalarList& vn
+)
+{
+    const scalar n
+    (
+        keywordRange::positive(cal, "exponent", "of sigma(T) [-]")
+    );
+
+    // The measurements: points (several powders or conditions), or one
+    // powder's Tt and Td at the top
+    List<dictionary> pointDicts;
+    if (cal.found("points"))
+    {
+        for (const word key : {"powder", "Tt", "Td"})
+        {
+            if (cal.found(key))
+            {
+                FatalIOErrorInKeyword(cal, key)
+                    << "Keyword " << key << " in " << cal.name() << " with"
+                    << " points: give every measurement in points"
+                    << exit(FatalIOError);
+            }
+        }
+        pointDicts = cal.get<List<dictionary>>("points");
+        if (pointDicts.empty())
+        {
+            FatalIOErrorInKeyword(cal, "points")
+                << "points in " << cal.name() << " is empty" << nl
+                << "Each point is { powder <name>; Tt <K>; Td <K>; } with"
+                << " Tt, Td or both" << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        pointDicts.setSize(1, cal);
+        pointDicts[0].remove("exponent");
+    }
+
+    DynamicList<measured> data;
+    forAll(pointDicts, pi)
+    {
+        const dictionary& d = pointDicts[pi];
+        const string where
+        (
+            cal.found("points")
+          ? string(cal.name() + "/points, point " + Foam::name(pi))
+          : string(cal.name())
+        );
+        for (const entry& e : d)
+        {
+            if (!wordList({"powder", "Tt", "Td"}).found(e.keyword()))
+            {
+                FatalIOErrorInFunction(cal)
+                    << "Unknown keyword " << e.keyword() << " in " << where
+                    << nl << "Valid keywords are (powder Tt Td)"
+                    << exit(FatalIOError);
+            }
+        }
+        const word which(d.get<word>("powder"));
+        label k = -1;
+        forAll(powders, i)
+        {
+            if (powders[i].name == which) k = i;
+        }
+        if (k < 0)
+        {
+            wordList names(powders.size());
+            forAll(powders, i)
+            {
+                names[i] = powders[i].name;
+            }
+            FatalIOErrorInFunction(cal)
+                << "powder " << which << " of " << where << " is not in"
+                << " powders" << nl << "Valid powders are " << names
+                << exit(FatalIOError);
+        }
+        if (!d.found("Tt") && !d.found("Td"))
+        {
+            FatalIOErrorInFunction(cal)
+                << where << " gives neither Tt nor Td [K]"
+                << exit(FatalIOError);
+        }
+        const powder& p = powders[k];
+        const HertzCollision hertz(p.d/2, p.m, material.Y(), material.nu());
+        scalar Tt = -1;
+        for (const word key : {"Tt", "Td"})
+        {
+            if (!d.found(key))
+            {
+                continue;
+            }
+            const scalar T = keywordRange::get
+            (
+                d, key, 200, 3000, "a temperature in kelvin [K]"
+            );
+            if (key == "Td" && Tt > 0 && !(T > Tt))
+            {
+                // T_t above T_d gave a tensile strength falling with T
+                FatalIOErrorInKeyword(d, "Td")
+                    << "Keywords Tt " << Tt << " and Td " << T << " of "
+                    << where << " must be temperatures in kelvin with"
+                    << " Tt < Td: the bed turns unstable (T_t) below"
+                    << " the temperature at which it defluidizes (T_d)"
+                    << exit(FatalIOError);
+            }
+            if (key == "Tt")
+            {
+                Tt = T;
+            }
+            const scalar v = key == "Tt" ? vn.first() : vn.last();
+            measured m;
+            m.powder = k;
+            m.what = key;
+            m.T = T;
+            m.Fn = hertz.maxNormalForce(v);
+            m.tc = hertz.contactTime(v);
+            data.append(m);
+        }
+    }
+    if (data.size() < 2)
+    {
+        FatalIOErrorInFunction(cal)
+            << cal.name() << " gives " << data.size() << " temperature: two"
+            << " or more (T_t and T_d) are needed for the two parameters a"
+            << " and b" << exit(FatalIOError);
+    }
+
+    // The tensile strength that puts the balance's crossing at T
+    const auto sigmaNeeded = [&](const measured& m, const scalar T)
+    {
+        return m.Fn/bridge.forcePerStrength(powders[m.powder].d/2, T, m.tc);
+    };
+
+    // Start: sigma(T_i) = sigmaNeeded(T_i) by linear least squares on
+    // Eigen's QR (with two temperatures the exact solve of before)
+    scalarRectangularMatrix A(data.size(), 2);
+    scalarField rhs(data.size());
+    forAll(data, i)
+    {
+        A(i, 0) = 1;
+        A(i, 1) = Foam::pow(data[i].T, n);
+        rhs[i] = sigmaNeeded(data[i], data[i].T);
+    }
+    const scalarField ab0(linearLeastSquares(A, rhs));
+
+    // Least squares in temperature: the residual of each measurement is
+    // the temperature at which sigma(T) = sigmaNeeded(T) (the root nearest
+    // the measured one, by Newton) minus the measured one
+    const auto g = [&](const measured& m, const scalarField& ab, const scalar T)
+    {
+        return ab[0] + ab[1]*Foam::pow(T, n) - sigmaNeeded(m, T);
+    };
+    const auto dgdT = [&](const measured& m, const scalarField& ab, const scalar T)
+    {
+        const scalar h = 1e-3;
+        return (g(m, ab, T + h) - g(m, ab, T - h))/(2*h);
+    };
+    const auto crossing = [&](const measured& m, const scalarField& ab)
+    {
+        scalar T = m.T;
+        for (label iter = 0; iter < 100; ++iter)
+        {
+            const scalar slope = dgdT(m, ab, T);
+            if (!(mag(slope) > VSMALL))
+            {
+                break;
+            }
+            const scalar step = max(min(-g(m, ab, T)/slope, 100.0), -100.0);
+            T = max(T + step, scalar(100));
+            if (mag(step) < 1e-10*T)
+            {
+                break;
+            }
+        }
+        return T;
+    };
+
+    const levenbergMarquardt lm
+    (
+        data.size(), 2,
+        [&](const scalarField& ab, scalarField& r, scalarRectangularMatrix* J)
+        {
+            forAll(data, i)
+            {
+                const scalar T = crossing(data[i], ab);
+                r[i] = T - data[i].T;
+                if (J)
+                {
+                    // Implicit: dT/da = -1/g_T, dT/db = -T^n/g_T
+                    const scalar slope = dgdT(data[i], ab, T);
+                    (*J)(i, 0) = -1/slope;
+                    (*J)(i, 1) = -Foam::pow(T, n)/slope;
+                }
+            }
+        },
+        true
+    );
+    const levenbergMarquardt::solution sol = lm.solve(ab0);
+    const scalarField& ab = sol.p;
+
+    const label oldPrecision = Info().precision(10);
+    Info<< "Calibration of sigma(T) = a + b T^" << n << " on "
+        << data.size() << " temperatures: " << (data.size() == 2
+           ? "as many as parameters, solved exactly"
+           : "least squares in temperature")
+        << nl << "    powder  measured       T [K]    sigma needed [Pa]"
+        << "   fitted T [K]   residual [K]" << nl;
+    forAll(data, i)
+    {
+        const measured& m = data[i];
+        Info<< "    " << setw(6) << powders[m.powder].name << "  "
+            << (m.what == "Tt" ? "T_t" : "T_d") << "  " << setw(12) << m.T
+            << "  " << setw(16) << sigmaNeeded(m, m.T) << "  "
+            << setw(14) << m.T + sol.residuals[i] << "  "
+            << setw(10) << sol.residuals[i] << nl;
+    }
+    Info<< "    a = " << ab[0] << " Pa";
+    if (sol.standardErrors.size())
+    {
+        Info<< " +- " << sol.standardErrors[0];
+    }
+    Info<< nl << "    b = " << ab[1] << " Pa/K^" << n;
+    if (sol.standardErrors.size())
+    {
+        Info<< " +- " << sol.standardErrors[1] << nl
+            << "    (standard errors from the temperatures' scatter, "
+            << sol.degreesOfFreedom << " degrees of freedom, RMS residual "
+            << std::sqrt(sol.sumOfSquares/data.size()) << " K;"
+            << " correlation of a and b " << sol.correlation(0, 1) << ")";
+    }
+    Info<< nl;
+    if (data.size() == 2)
+    {
+        Info<< "    sigma(" << data[0].T << " K) = "
+            << sigmaNeeded(data[0], data[0].T) << " Pa" << nl
+            << "    sigma(" << data[1].T << " K) = "
+            << sigmaNeeded(data[1], data[1].T) << " Pa" << nl;
+    }
+    Info<< "    tensileStrength polynomial ((" << ab[0] << " 0) ("
+        << ab[1] << " " << n << "));" << nl << endl;
+    Info().precision(oldPrecision);
 }
 
 } // End anonymous namespace
@@ -286,59 +559,14 @@ int main(int argc, char *argv[])
         << "v_n for T_t: " << vn.first() << " m/s, for T_d: " << vn.last()
         << " m/s" << nl << endl;
 
-    // Calibration of sigma(T) on one powder
+    // Calibration of sigma(T) on measured transition and defluidization
+    // temperatures
     if (args.found("calibrate"))
     {
-        const dictionary& cal = mapDict.subDict("calibration");
-        const word which(cal.get<word>("powder"));
-        const scalar Tt(keywordRange::positive(cal, "Tt", "[K]"));
-        const scalar Td(keywordRange::positive(cal, "Td", "[K]"));
-        if (!(Tt >= 200 && Td > Tt))
-        {
-            // T_t above T_d gave a tensile strength falling with T
-            FatalIOErrorInFunction(cal)
-                << "Keywords Tt " << Tt << " and Td " << Td << " of "
-                << cal.name() << " must be temperatures in kelvin with"
-                << " 200 K <= Tt < Td: the bed turns unstable (T_t) below"
-                << " the temperature at which it defluidizes (T_d)"
-                << exit(FatalIOError);
-        }
-
-        label pi = -1;
-        forAll(powders, i)
-        {
-            if (powders[i].name == which) pi = i;
-        }
-        if (pi < 0)
-        {
-            FatalIOErrorInFunction(cal)
-                << "powder " << which << " is not in powders" << exit(FatalIOError);
-        }
-        const powder& p = powders[pi];
-        const HertzCollision hertz(p.d/2, p.m, material.Y(), material.nu());
-
-        const scalar sigmaT =
-            hertz.maxNormalForce(vn.first())
-           /bridge.forcePerStrength(p.d/2, Tt, hertz.contactTime(vn.first()));
-        const scalar sigmaD =
-            hertz.maxNormalForce(vn.last())
-           /bridge.forcePerStrength(p.d/2, Td, hertz.contactTime(vn.last()));
-
-        // sigma(T) = a + b T^n through both points
-        const scalar n
+        calibrate
         (
-            keywordRange::positive(cal, "exponent", "of sigma(T) [-]")
+            mapDict.subDict("calibration"), powders, material, bridge, vn
         );
-        const scalar b = (sigmaD - sigmaT)/(Foam::pow(Td, n) - Foam::pow(Tt, n));
-        const scalar a = sigmaT - b*Foam::pow(Tt, n);
-
-        const label oldPrecision = Info().precision(10);
-        Info<< "Calibration on " << p.name << ":" << nl
-            << "    sigma(" << Tt << " K) = " << sigmaT << " Pa" << nl
-            << "    sigma(" << Td << " K) = " << sigmaD << " Pa" << nl
-            << "    tensileStrength polynomial ((" << a << " 0) ("
-            << b << " " << n << "));" << nl << endl;
-        Info().precision(oldPrecision);
     }
 
     // The three surface models of the curves, in the column order

@@ -23,8 +23,18 @@ Description
     Each step advances X by the law exactly over the write interval, so the
     curve does not depend on the interval.
 
+    -fit FILE: the law's parameters fitted to measured curves instead
+    (HancockSharpFit: the file's format, the least squares): k0, E_a, n
+    (-exponent perTemperature, linear or constant) and the hydrogen order
+    m, each with its standard error, the correlation of ln k0 and E_a and
+    the residual per curve; parameters listed in -hold stay at the values
+    of kinetics, which also start the others. Writes, in
+    postProcessing/reductionDegree/fit/: kinetics (the entry to paste),
+    points.dat (each point with its fitted X) and curves.dat (the fitted
+    curves, for validation/reduction/plotReductionFit).
+
 Usage
-    reductionDegree [-dict FILE]
+    reductionDegree [-dict FILE] [-fit FILE [-exponent MODEL] [-hold '(...)']]
 
     system/reductionDegreeDict (temperatures in kelvin):
     \table
@@ -48,8 +58,169 @@ Usage
 #include "keywordRange.H"
 #include "reductionLaw.H"
 #include "ironOxidePath.H"
+#include "HancockSharpFit.H"
 
 using namespace Foam;
+
+namespace
+{
+
+//- -fit: the law fitted to the curves of a file, printed and written
+void fitCurves
+(
+    const argList& args,
+    const dictionary& dict,
+    const reductionLaw& law
+)
+{
+    const auto* hs = isA<reductionLaws::HancockSharp>(law);
+    if (!hs)
+    {
+        FatalIOErrorInKeyword(dict, "kinetics")
+            << "-fit fits the HancockSharp law: kinetics in " << dict.name()
+            << " is " << law.type() << nl << "Valid laws for -fit are"
+            << " (HancockSharp)" << exit(FatalIOError);
+    }
+
+    const fileName file(args.get<fileName>("fit").expand());
+    const word modelName
+    (
+        args.lookupOrDefault<word>("exponent", "perTemperature")
+    );
+    if (!HancockSharpFit::exponentModelNames.found(modelName))
+    {
+        FatalErrorInFunction
+            << "Unknown -exponent " << modelName << nl
+            << "Valid exponent models are "
+            << HancockSharpFit::exponentModelNames.sortedToc()
+            << exit(FatalError);
+    }
+    const wordList hold
+    (
+        args.found("hold") ? args.get<wordList>("hold") : wordList()
+    );
+
+    const List<HancockSharpFit::curve> curves
+    (
+        HancockSharpFit::readCurves(file)
+    );
+    const HancockSharpFit fit
+    (
+        curves,
+        file,
+        *hs,
+        HancockSharpFit::exponentModelNames[modelName],
+        hold
+    );
+    const levenbergMarquardt::solution& s = fit.solution();
+
+    Info<< nl << "Hancock-Sharp law (eq 3.2-3.4) fitted to " << curves.size()
+        << " curves, " << fit.nPoints() << " points (t > 0) of " << file
+        << nl << "    " << fit.nFree() << " free parameters, "
+        << s.degreesOfFreedom << " degrees of freedom, "
+        << s.iterations << " iterations ("
+        << (s.converged ? "converged" : "NOT converged") << "), sum of"
+        << " squares " << s.sumOfSquares << ", condition number "
+        << s.conditionNumber << nl;
+    if (!fit.hasErrors())
+    {
+        Info<< "    as many points as parameters: solved exactly, no"
+            << " residual left to estimate standard errors" << nl;
+    }
+    Info<< nl << "parameter" << tab << "value" << tab << "standard error"
+        << tab << "relative" << tab << "unit" << nl;
+    for (const HancockSharpFit::parameter& q : fit.parameters())
+    {
+        Info<< q.name << tab << setprecision(8) << q.value << tab;
+        if (!q.fitted)
+        {
+            Info<< "held" << tab << "-";
+        }
+        else if (!fit.hasErrors())
+        {
+            Info<< "-" << tab << "-";
+        }
+        else
+        {
+            Info<< setprecision(4) << q.standardError << tab
+                << (q.value != 0 ? mag(q.standardError/q.value) : scalar(0));
+        }
+        Info<< tab << q.unit << nl;
+    }
+    Info<< setprecision(6);
+    if (fit.hasErrors() && !hold.found("activationEnergy"))
+    {
+        Info<< "correlation of ln(k0) and E_a: " << setprecision(6)
+            << fit.correlationLnK0Ea() << nl;
+    }
+
+    Info<< nl << "curve" << tab << "T [K]" << tab << "H2" << tab << "points"
+        << tab << "RMS residual" << tab << "max |residual|" << nl;
+    forAll(curves, ci)
+    {
+        const HancockSharpFit::curve& c = curves[ci];
+        Info<< c.name << tab << c.T << tab << c.yH2 << tab << c.t.size()
+            << tab << setprecision(4) << fit.rms(ci) << tab
+            << fit.maxResidual(ci) << setprecision(6) << nl;
+    }
+    const scalar rmsAll =
+        std::sqrt(s.sumOfSquares/max(fit.nPoints(), label(1)));
+    Info<< "all" << tab << "-" << tab << "-" << tab << fit.nPoints() << tab
+        << setprecision(4) << rmsAll << setprecision(6) << nl;
+
+    // Written: the entry, the points, the curves
+    const fileName outDir
+    (
+        args.rootPath()/args.globalCaseName()/"postProcessing"
+       /"reductionDegree"/"fit"
+    );
+    mkDir(outDir);
+    {
+        OFstream os(outDir/"kinetics");
+        os  << "// The Hancock-Sharp law fitted by reductionDegree -fit to "
+            << file << nl << "// (" << curves.size() << " curves, "
+            << fit.nPoints() << " points; held: " << hold
+            << "; -exponent " << modelName << "). Temperatures in kelvin."
+            << nl;
+        fit.writeKinetics(os);
+        Info<< nl;
+        fit.writeKinetics(Info());
+    }
+    {
+        OFstream os(outDir/"points.dat");
+        os  << "# curve T[K] H2 t[s] X Xfit" << nl << setprecision(10);
+        forAll(curves, ci)
+        {
+            const HancockSharpFit::curve& c = curves[ci];
+            forAll(c.t, k)
+            {
+                os  << c.name << ' ' << c.T << ' ' << c.yH2 << ' '
+                    << c.t[k] << ' ' << c.X[k] << ' ' << fit.X(ci, c.t[k])
+                    << nl;
+            }
+        }
+    }
+    {
+        OFstream os(outDir/"curves.dat");
+        os  << "# curve T[K] H2 t[s] Xfit (200 points to 1.2 times the"
+            << " last measured time)" << nl << setprecision(10);
+        forAll(curves, ci)
+        {
+            const HancockSharpFit::curve& c = curves[ci];
+            const scalar tEnd = 1.2*c.t.last();
+            for (label k = 0; k <= 200; ++k)
+            {
+                const scalar t = tEnd*k/200;
+                os  << c.name << ' ' << c.T << ' ' << c.yH2 << ' ' << t
+                    << ' ' << fit.X(ci, t) << nl;
+            }
+        }
+    }
+    Info<< nl << "Written to " << outDir << nl;
+}
+
+} // End anonymous namespace
+
 
 int main(int argc, char *argv[])
 {
@@ -61,6 +232,27 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::noFunctionObjects();
     argList::addOption("dict", "file", "Use alternative reductionDegreeDict");
+    argList::addOption
+    (
+        "fit",
+        "file",
+        "Fit the Hancock-Sharp law's parameters to the measured curves of"
+        " the file (format: the class HancockSharpFit)"
+    );
+    argList::addOption
+    (
+        "exponent",
+        "model",
+        "With -fit: the Avrami exponent n per temperature (perTemperature,"
+        " the default), linear in T (linear) or one value (constant)"
+    );
+    argList::addOption
+    (
+        "hold",
+        "list",
+        "With -fit: parameters held at the values of kinetics, from"
+        " (activationEnergy n hydrogenOrder)"
+    );
 
     #include "setRootCase.H"
     numberLiterals::checkCase(args);
@@ -96,6 +288,22 @@ int main(int argc, char *argv[])
     (
         reductionLaw::New(dict.subDict("kinetics"))
     );
+
+    if (args.found("fit"))
+    {
+        fitCurves(args, dict, *law);
+        Info<< "End" << endl;
+        return 0;
+    }
+    for (const word opt : {"exponent", "hold"})
+    {
+        if (args.found(opt))
+        {
+            FatalErrorInFunction
+                << "Option -" << opt << " is for -fit only"
+                << exit(FatalError);
+        }
+    }
     const scalar interval =
         keywordRange::get(dict, "writeInterval", 0, GREAT, "a time [s]", true);
 
