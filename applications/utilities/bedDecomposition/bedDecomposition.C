@@ -49,7 +49,7 @@ Description
 Usage
     bedDecomposition [-time T] [-subdomains N] [-method hierarchical]
                      [-n "(4 2 1)"] [-parcelWeight 20] [-cloud cloud]
-                     [-dataFile F] [-noWrite] [-evaluate]
+                     [-dataFile F] [-noWrite] [-evaluate] [-work [-skin 0.2]]
 
     \table
         Option        | Description                                   | Default
@@ -62,6 +62,8 @@ Usage
         -dataFile     | the file written in constant/                 | cellDecomposition
         -noWrite      | report only                                   | off
         -evaluate     | report the balance of constant/<dataFile> on the parcels of every time selected (-time 1:3) | off
+        -work         | report the DEM engine's work per subdomain of the weighted decomposition, with its ghost rule (demHalo): parcels, ghosts received, neighbours, ghost bytes per sub-step, contacts, contacts across a boundary (evaluated on both sides), candidate pairs | off
+        -skin         | with -work: the lists' skin over 2 r_max | 0.2
     \endtable
 
 \*---------------------------------------------------------------------------*/
@@ -73,6 +75,8 @@ Usage
 #include "IOdictionary.H"
 #include "labelIOList.H"
 #include "passiveParticleCloud.H"
+#include "IOField.H"
+#include "boundBox.H"
 #include "decompositionMethod.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
@@ -179,6 +183,255 @@ void report
         << endl;
 }
 
+//- The DEM engine's work per subdomain with its ghost rule (demHalo): each
+//  subdomain's region is the box of its cells and its parcels; it receives
+//  as ghosts the other subdomains' parcels inside its region grown by the
+//  contact range 2 r_max (1 + skin); it evaluates every pair with one of
+//  its own parcels, the pairs across a boundary on both sides
+void engineWork
+(
+    const polyMesh& mesh,
+    const labelList& domain,
+    const label nDomains,
+    const word& cloudName,
+    const scalar skinFraction
+)
+{
+    passiveParticleCloud cloud(mesh, cloudName, false);
+    IOField<scalar> d
+    (
+        IOobject
+        (
+            "d",
+            mesh.time().timeName(),
+            cloud::prefix/cloudName,
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const label nP = cloud.size();
+    if (d.size() != nP)
+    {
+        FatalErrorInFunction
+            << "The cloud " << cloudName << " at " << mesh.time().timeName()
+            << " has " << nP << " parcels and " << d.size() << " diameters"
+            << exit(FatalError);
+    }
+    pointField x(nP);
+    labelList proc(nP);
+    scalar rMax = 0;
+    {
+        label i = 0;
+        for (const passiveParticle& p : cloud)
+        {
+            x[i] = p.position();
+            proc[i] = domain[p.cell()];
+            rMax = max(rMax, d[i]/2);
+            ++i;
+        }
+    }
+    const scalar range = 2*rMax*(1 + skinFraction);
+
+    // Regions: the boxes of the subdomains' cells (their faces' points)
+    // and parcels
+    List<boundBox> region(nDomains, boundBox::invertedBox);
+    const labelList& owner = mesh.faceOwner();
+    const labelList& neighbour = mesh.faceNeighbour();
+    const pointField& pts = mesh.points();
+    forAll(mesh.faces(), facei)
+    {
+        const face& f = mesh.faces()[facei];
+        boundBox& a = region[domain[owner[facei]]];
+        for (const label pi : f)
+        {
+            a.add(pts[pi]);
+        }
+        if (facei < neighbour.size())
+        {
+            boundBox& b = region[domain[neighbour[facei]]];
+            for (const label pi : f)
+            {
+                b.add(pts[pi]);
+            }
+        }
+    }
+    forAll(x, i)
+    {
+        region[proc[i]].add(x[i]);
+    }
+    List<boundBox> grown(region);
+    for (boundBox& b : grown)
+    {
+        b.min() -= vector::uniform(range);
+        b.max() += vector::uniform(range);
+    }
+
+    // Ghosts received and neighbours (messages each way per sub-step)
+    labelList ghosts(nDomains, 0), nbrs(nDomains, 0), own(nDomains, 0);
+    forAll(x, i)
+    {
+        ++own[proc[i]];
+    }
+    for (label p = 0; p < nDomains; ++p)
+    {
+        for (label q = 0; q < nDomains; ++q)
+        {
+            if (q != p && grown[min(p, q)].overlaps(region[max(p, q)]))
+            {
+                ++nbrs[p];
+            }
+        }
+    }
+    forAll(x, i)
+    {
+        for (label p = 0; p < nDomains; ++p)
+        {
+            if
+            (
+                p != proc[i]
+             && grown[min(p, proc[i])].overlaps(region[max(p, proc[i])])
+             && grown[p].contains(x[i])
+            )
+            {
+                ++ghosts[p];
+            }
+        }
+    }
+
+    // Touching pairs (contacts) and candidate pairs (within the lists'
+    // reach, r_i + r_j + skin), own and across a boundary, by binning
+    const scalar skin = skinFraction*2*rMax;
+    const scalar h = 2*rMax + skin;
+    boundBox all(x);
+    const vector span(all.span());
+    const label nx = max(label(span.x()/h), label(1));
+    const label ny = max(label(span.y()/h), label(1));
+    const label nz = max(label(span.z()/h), label(1));
+    auto binOf = [&](const point& p, label& i, label& j, label& k)
+    {
+        i = min(label((p.x() - all.min().x())/span.x()*nx), nx - 1);
+        j = min(label((p.y() - all.min().y())/span.y()*ny), ny - 1);
+        k = min(label((p.z() - all.min().z())/span.z()*nz), nz - 1);
+        i = max(i, label(0)); j = max(j, label(0)); k = max(k, label(0));
+    };
+    labelListList bins(nx*ny*nz);
+    {
+        List<DynamicList<label>> b(nx*ny*nz);
+        forAll(x, n)
+        {
+            label i, j, k;
+            binOf(x[n], i, j, k);
+            b[i + nx*(j + ny*k)].append(n);
+        }
+        forAll(b, n)
+        {
+            bins[n].transfer(b[n]);
+        }
+    }
+    labelList contacts(nDomains, 0), cross(nDomains, 0);
+    labelList candidates(nDomains, 0);
+    label nContacts = 0, nCross = 0;
+    // The ghosts a subdomain needs: the other subdomains' parcels in a
+    // candidate pair with one of its own
+    List<boolList> needed(nDomains, boolList(nP, false));
+    forAll(x, a)
+    {
+        label i, j, k;
+        binOf(x[a], i, j, k);
+        for (label dk = -1; dk <= 1; ++dk)
+        for (label dj = -1; dj <= 1; ++dj)
+        for (label di = -1; di <= 1; ++di)
+        {
+            const label ii = i + di, jj = j + dj, kk = k + dk;
+            if (ii < 0 || jj < 0 || kk < 0 || ii >= nx || jj >= ny || kk >= nz)
+            {
+                continue;
+            }
+            for (const label b : bins[ii + nx*(jj + ny*kk)])
+            {
+                if (b <= a)
+                {
+                    continue;
+                }
+                const scalar dist = mag(x[a] - x[b]);
+                const scalar sumR = (d[a] + d[b])/2;
+                if (dist < sumR + skin)
+                {
+                    ++candidates[proc[a]];
+                    if (proc[b] != proc[a])
+                    {
+                        ++candidates[proc[b]];
+                        needed[proc[a]][b] = true;
+                        needed[proc[b]][a] = true;
+                    }
+                }
+                if (dist < sumR)
+                {
+                    ++nContacts;
+                    ++contacts[proc[a]];
+                    if (proc[b] != proc[a])
+                    {
+                        ++contacts[proc[b]];
+                        ++cross[proc[a]];
+                        ++cross[proc[b]];
+                        ++nCross;
+                    }
+                }
+            }
+        }
+    }
+
+    labelList neededGhosts(nDomains, 0);
+    forAll(needed, p)
+    {
+        for (const bool b : needed[p])
+        {
+            neededGhosts[p] += b;
+        }
+    }
+
+    auto ratio = [nDomains](const labelList& v)
+    {
+        const scalar mean = scalar(sum(v))/nDomains;
+        std::ostringstream os;
+        os << std::fixed << std::setprecision(3)
+           << (mean > 0 ? max(v)/mean : 1.0);
+        return word(os.str());
+    };
+    Info<< "The DEM engine's work per subdomain (ghost range 2 r_max (1 + "
+        << skinFraction << ") = " << range << " m; " << nP << " parcels, "
+        << nContacts << " contacts):" << nl
+        << "    subdomain    parcels     ghosts  neighbours  ghost bytes/sub-step"
+        << "   contacts  across a boundary  candidate pairs" << nl;
+    for (label p = 0; p < nDomains; ++p)
+    {
+        Info<< "    " << setw(9) << p << setw(11) << own[p] << setw(11)
+            << ghosts[p] << setw(12) << nbrs[p] << setw(22)
+            << 9*sizeof(scalar)*ghosts[p] << setw(11) << contacts[p]
+            << setw(19) << cross[p] << setw(17) << candidates[p] << nl;
+    }
+    Info<< "    max/mean  " << setw(11) << ratio(own) << setw(11)
+        << ratio(ghosts) << setw(12) << ratio(nbrs) << setw(22)
+        << ratio(ghosts) << setw(11) << ratio(contacts) << setw(19)
+        << ratio(cross) << setw(17) << ratio(candidates) << nl;
+    // One line to parse (validation/benchmarks/scaling)
+    Info<< "work: subdomains " << nDomains << " parcels " << nP
+        << " maxParcels " << max(own) << " maxGhosts " << max(ghosts)
+        << " sumGhosts " << sum(ghosts) << " maxNeighbours " << max(nbrs)
+        << " maxGhostBytes " << 9*sizeof(scalar)*max(ghosts)
+        << " contacts " << nContacts << " crossContacts " << nCross
+        << " maxContacts " << max(contacts)
+        << " maxCandidates " << max(candidates)
+        << " sumCandidates " << sum(candidates)
+        << " maxNeededGhosts " << max(neededGhosts)
+        << " sumNeededGhosts " << sum(neededGhosts) << nl
+        << "    (ghosts needed, in a candidate pair with an own parcel: "
+        << sum(neededGhosts) << " of the " << sum(ghosts) << " sent)" << nl
+        << endl;
+}
+
 } // End anonymous namespace
 
 
@@ -206,6 +459,17 @@ int main(int argc, char *argv[])
         "dataFile", "name", "file written in constant/ (cellDecomposition)"
     );
     argList::addBoolOption("noWrite", "report only");
+    argList::addBoolOption
+    (
+        "work",
+        "also report the DEM engine's work per subdomain of the weighted"
+        " decomposition: parcels, ghosts, neighbours, ghost bytes per"
+        " sub-step, contacts and those across a boundary"
+    );
+    argList::addOption
+    (
+        "skin", "fraction", "with -work: the lists' skin over 2 r_max (0.2)"
+    );
     argList::addBoolOption
     (
         "evaluate",
@@ -404,6 +668,18 @@ int main(int argc, char *argv[])
       + " x parcels):",
         mesh, domain, nDomains, parcels
     );
+
+    if (args.found("work"))
+    {
+        const scalar skin = args.getOrDefault<scalar>("skin", 0.2);
+        if (!(skin >= 0))
+        {
+            FatalErrorInFunction
+                << "Option -skin of bedDecomposition must be >= 0, not "
+                << skin << exit(FatalError);
+        }
+        engineWork(mesh, domain, nDomains, cloudName, skin);
+    }
 
     if (!args.found("noWrite"))
     {
