@@ -77,6 +77,9 @@ Usage
 #include "passiveParticleCloud.H"
 #include "IOField.H"
 #include "boundBox.H"
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
 #include "decompositionMethod.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
@@ -186,8 +189,10 @@ void report
 //- The DEM engine's work per subdomain with its ghost rule (demHalo): each
 //  subdomain's region is the box of its cells and its parcels; it receives
 //  as ghosts the other subdomains' parcels inside its region grown by the
-//  contact range 2 r_max (1 + skin); it evaluates every pair with one of
-//  its own parcels, the pairs across a boundary on both sides
+//  contact range 2 r_max (1 + skin) that lie in one of the 27 bins (of the
+//  range) around a bin holding one of its parcels; it evaluates every
+//  pair with one of its own parcels, the pairs across a boundary on both
+//  sides
 void engineWork
 (
     const polyMesh& mesh,
@@ -284,6 +289,34 @@ void engineWork
             }
         }
     }
+    // The engine's bins of the range, from the lowest corner of the
+    // regions: a parcel is sent to a neighbour when it lies in the
+    // neighbour's enlarged region and one of the 27 bins around its own
+    // holds a parcel of the neighbour
+    point origin(point::uniform(GREAT));
+    for (const boundBox& b : region)
+    {
+        if (b.valid())
+        {
+            origin = min(origin, b.min());
+        }
+    }
+    auto binKey = [&](const point& p, const label di, const label dj, const label dk)
+    {
+        const label i = label(std::floor((p.x() - origin.x())/range)) + di;
+        const label j = label(std::floor((p.y() - origin.y())/range)) + dj;
+        const label k = label(std::floor((p.z() - origin.z())/range)) + dk;
+        return
+            (std::uint64_t(i) & 0x1FFFFF)
+          | ((std::uint64_t(j) & 0x1FFFFF) << 21)
+          | ((std::uint64_t(k) & 0x1FFFFF) << 42);
+    };
+    List<std::unordered_set<std::uint64_t>> occupied(nDomains);
+    forAll(x, i)
+    {
+        occupied[proc[i]].insert(binKey(x[i], 0, 0, 0));
+    }
+    labelList boxGhosts(nDomains, 0);
     forAll(x, i)
     {
         for (label p = 0; p < nDomains; ++p)
@@ -295,7 +328,18 @@ void engineWork
              && grown[p].contains(x[i])
             )
             {
-                ++ghosts[p];
+                ++boxGhosts[p];
+                bool near = false;
+                for (label dk = -1; dk <= 1 && !near; ++dk)
+                for (label dj = -1; dj <= 1 && !near; ++dj)
+                for (label di = -1; di <= 1 && !near; ++di)
+                {
+                    near = occupied[p].count(binKey(x[i], di, dj, dk));
+                }
+                if (near)
+                {
+                    ++ghosts[p];
+                }
             }
         }
     }
@@ -425,10 +469,13 @@ void engineWork
         << " maxContacts " << max(contacts)
         << " maxCandidates " << max(candidates)
         << " sumCandidates " << sum(candidates)
+        << " sumBoxGhosts " << sum(boxGhosts)
         << " maxNeededGhosts " << max(neededGhosts)
         << " sumNeededGhosts " << sum(neededGhosts) << nl
         << "    (ghosts needed, in a candidate pair with an own parcel: "
-        << sum(neededGhosts) << " of the " << sum(ghosts) << " sent)" << nl
+        << sum(neededGhosts) << " of the " << sum(ghosts) << " sent; the"
+        << " enlarged boxes alone, the rule before the bins, sent "
+        << sum(boxGhosts) << ")" << nl
         << endl;
 }
 

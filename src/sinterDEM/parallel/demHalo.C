@@ -7,6 +7,10 @@
 #include "UIPstream.H"
 #include "UOPstream.H"
 
+#include <cmath>
+#include <cstdint>
+#include <unordered_set>
+
 Foam::demHalo::demHalo(const boundBox& meshBox)
 :
     meshBox_(meshBox),
@@ -62,15 +66,106 @@ void Foam::demHalo::select
     }
     neighbours_.transfer(nbrs);
 
-    // Send the local particles inside each neighbour's enlarged region
+    // Send each neighbour the local particles within range of one of its
+    // particles, tested on bins of the range (a grid common to all
+    // processors): a particle is sent when one of the 27 bins around its
+    // own holds a particle of the neighbour. A pair within range has its
+    // partners in neighbouring bins, so none is missed; unlike the
+    // enlarged box alone, a boundary that follows the cells (a jagged
+    // one) costs a strip of the range, not of a cell.
+    point origin(point::uniform(GREAT));
+    for (const boundBox& b : regions)
+    {
+        if (b.valid())
+        {
+            origin = min(origin, b.min());
+        }
+    }
+    const scalar h = range > 0 ? range : scalar(1);
+    auto binOf = [&origin, h](const point& x)
+    {
+        return FixedList<label, 3>
+        ({
+            label(std::floor((x.x() - origin.x())/h)),
+            label(std::floor((x.y() - origin.y())/h)),
+            label(std::floor((x.z() - origin.z())/h))
+        });
+    };
+    // A bin's key: 21 bits per direction (bins of the range over 2 million
+    // ranges; the indices are >= 0 from the global origin)
+    auto key = [](const label i, const label j, const label k)
+    {
+        return
+            (std::uint64_t(i) & 0x1FFFFF)
+          | ((std::uint64_t(j) & 0x1FFFFF) << 21)
+          | ((std::uint64_t(k) & 0x1FFFFF) << 42);
+    };
+
+    List<FixedList<label, 3>> bin(nLocal);
+    std::unordered_set<std::uint64_t> ownBins;
+    for (label i = 0; i < nLocal; ++i)
+    {
+        bin[i] = binOf(P.position[i]);
+        ownBins.insert(key(bin[i][0], bin[i][1], bin[i][2]));
+    }
+
+    // The neighbours' occupied bins
+    List<std::unordered_set<std::uint64_t>> nbrBins(neighbours_.size());
+    {
+        PstreamBuffers binBuffers(Pstream::commsTypes::nonBlocking);
+        labelList mine(3*ownBins.size());
+        label n = 0;
+        for (const std::uint64_t b : ownBins)
+        {
+            mine[n++] = label(b & 0x1FFFFF);
+            mine[n++] = label((b >> 21) & 0x1FFFFF);
+            mine[n++] = label((b >> 42) & 0x1FFFFF);
+        }
+        forAll(neighbours_, k)
+        {
+            UOPstream os(neighbours_[k], binBuffers);
+            os << mine;
+        }
+        binBuffers.finishedSends();
+        forAll(neighbours_, k)
+        {
+            UIPstream is(neighbours_[k], binBuffers);
+            labelList theirs(is);
+            nbrBins[k].reserve(theirs.size()/3);
+            for (label m = 0; m + 2 < theirs.size(); m += 3)
+            {
+                nbrBins[k].insert(key(theirs[m], theirs[m+1], theirs[m+2]));
+            }
+        }
+    }
+
     sendMap_.setSize(neighbours_.size());
     forAll(neighbours_, k)
     {
         const boundBox& box = grown[neighbours_[k]];
+        const std::unordered_set<std::uint64_t>& theirs = nbrBins[k];
         DynamicList<label> send;
         for (label i = 0; i < nLocal; ++i)
         {
-            if (box.contains(P.position[i]))
+            if (!box.contains(P.position[i]))
+            {
+                continue;
+            }
+            bool near = false;
+            for (label dk = -1; dk <= 1 && !near; ++dk)
+            {
+                for (label dj = -1; dj <= 1 && !near; ++dj)
+                {
+                    for (label di = -1; di <= 1 && !near; ++di)
+                    {
+                        near = theirs.count
+                        (
+                            key(bin[i][0] + di, bin[i][1] + dj, bin[i][2] + dk)
+                        );
+                    }
+                }
+            }
+            if (near)
             {
                 send.append(i);
             }

@@ -441,6 +441,11 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
             << " bridged";
     }
     Info<< "; lists built " << engine_.nBuilds() - builds0 << " times";
+    if (Pstream::parRun())
+    {
+        Info<< "; " << returnReduce(engine_.nGhosts(), sumOp<label>())
+            << " ghosts";
+    }
     if (nPlaced)
     {
         Info<< "; " << nPlaced << " began placed into each other (deepest "
