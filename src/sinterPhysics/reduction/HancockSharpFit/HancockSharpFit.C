@@ -5,7 +5,6 @@
 #include "IOmanip.H"
 
 #include <cmath>
-#include <sstream>
 #include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -31,14 +30,6 @@ const scalar nSlopeScale = 100;
 
 //- Two temperatures are the same within this relative difference
 const scalar sameT = 1e-9;
-
-std::string str(const scalar x)
-{
-    std::ostringstream os;
-    os.precision(10);
-    os << x;
-    return os.str();
-}
 
 } // End anonymous namespace
 
@@ -266,7 +257,7 @@ Foam::HancockSharpFit::HancockSharpFit
         refuse
         (
             0,
-            "every curve is at T = " + str(groupT_[0]) + " K: the"
+            "every curve is at T = " + std::string(Foam::name(groupT_[0])) + " K: the"
             " activation energy E_a needs curves at two temperatures or"
             " more; hold it (-hold '(activationEnergy)') at the value of"
             " the kinetics"
@@ -277,7 +268,7 @@ Foam::HancockSharpFit::HancockSharpFit
         refuse
         (
             0,
-            "every curve is at T = " + str(groupT_[0]) + " K: n linear in"
+            "every curve is at T = " + std::string(Foam::name(groupT_[0])) + " K: n linear in"
             " T needs curves at two temperatures or more (-exponent"
             " constant, or hold n)"
         );
@@ -287,7 +278,7 @@ Foam::HancockSharpFit::HancockSharpFit
         refuse
         (
             0,
-            "every curve is at H2 " + str(yDistinct[0]) + ": the hydrogen"
+            "every curve is at H2 " + std::string(Foam::name(yDistinct[0])) + ": the hydrogen"
             " order m needs curves at two hydrogen fractions or more; hold"
             " it (-hold '(hydrogenOrder)') at the value of the kinetics"
         );
