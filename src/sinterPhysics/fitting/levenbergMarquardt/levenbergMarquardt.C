@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "levenbergMarquardt.H"
+#include "eigenViews.H"
 #include "error.H"
 
 #include <cmath>
@@ -15,44 +16,10 @@
 namespace
 {
 
+using namespace Foam::eigenViews;
+
 typedef Eigen::MatrixXd eMatrix;
 typedef Eigen::VectorXd eVector;
-
-eVector toEigen(const Foam::scalarField& f)
-{
-    eVector v(f.size());
-    for (Foam::label i = 0; i < f.size(); ++i)
-    {
-        v(i) = f[i];
-    }
-    return v;
-}
-
-
-Foam::scalarField toField(const eVector& v)
-{
-    Foam::scalarField f(v.size());
-    for (Foam::label i = 0; i < f.size(); ++i)
-    {
-        f[i] = v(i);
-    }
-    return f;
-}
-
-
-eMatrix toEigen(const Foam::scalarRectangularMatrix& J)
-{
-    eMatrix m(J.m(), J.n());
-    for (Foam::label i = 0; i < J.m(); ++i)
-    {
-        for (Foam::label j = 0; j < J.n(); ++j)
-        {
-            m(i, j) = J(i, j);
-        }
-    }
-    return m;
-}
-
 
 bool allFinite(const Foam::scalarField& f)
 {
@@ -181,9 +148,9 @@ Foam::levenbergMarquardt::solution Foam::levenbergMarquardt::solve
             << exit(FatalError);
     }
 
-    eVector x(toEigen(p));
-    eMatrix J(toEigen(Jf));
-    eVector rv(toEigen(r));
+    eVector x(view(p));
+    eMatrix J(view(Jf));
+    eVector rv(view(r));
     scalar S = rv.squaredNorm();
     eMatrix A(J.transpose()*J);
     eVector g(J.transpose()*rv);
@@ -233,9 +200,9 @@ Foam::levenbergMarquardt::solution Foam::levenbergMarquardt::solve
         const eVector xNew(x + h);
         scalarField rNew;
         scalarRectangularMatrix JNew;
-        evaluate(toField(xNew), rNew, JNew);
+        evaluate(field(xNew), rNew, JNew);
         const scalar SNew =
-            allFinite(rNew) ? toEigen(rNew).squaredNorm() : GREAT;
+            allFinite(rNew) ? view(rNew).squaredNorm() : GREAT;
 
         // Ratio of the actual to the predicted decrease
         const scalar predicted = h.dot(mu*D.cwiseProduct(h) - g);
@@ -244,8 +211,8 @@ Foam::levenbergMarquardt::solution Foam::levenbergMarquardt::solve
         if (rho > 0 && SNew < S)
         {
             x = xNew;
-            J = toEigen(JNew);
-            rv = toEigen(rNew);
+            J = view(JNew);
+            rv = view(rNew);
             S = SNew;
             A = J.transpose()*J;
             g = J.transpose()*rv;
@@ -266,21 +233,14 @@ Foam::levenbergMarquardt::solution Foam::levenbergMarquardt::solve
         }
     }
 
-    s.p = toField(x);
-    s.residuals = toField(rv);
+    s.p = field(x);
+    s.residuals = field(rv);
     s.sumOfSquares = S;
     s.iterations = iter;
     s.degreesOfFreedom = nResiduals_ - nParameters_;
 
     // Rank and covariance from the SVD of the column-scaled Jacobian
-    eVector colNorm(J.colwise().norm().transpose());
-    for (Eigen::Index j = 0; j < colNorm.size(); ++j)
-    {
-        if (!(colNorm(j) > 0))
-        {
-            colNorm(j) = 1;
-        }
-    }
+    const eVector colNorm(columnNorms(J));
     const eMatrix Js(J*colNorm.cwiseInverse().asDiagonal());
     Eigen::JacobiSVD<eMatrix> svd(Js, Eigen::ComputeThinV);
     const eVector sv(svd.singularValues());
@@ -300,7 +260,7 @@ Foam::levenbergMarquardt::solution Foam::levenbergMarquardt::solve
 
     if (s.rank < nParameters_)
     {
-        s.nullDirection = toField(svd.matrixV().col(nParameters_ - 1));
+        s.nullDirection = field(svd.matrixV().col(nParameters_ - 1));
     }
     else if (s.degreesOfFreedom > 0)
     {

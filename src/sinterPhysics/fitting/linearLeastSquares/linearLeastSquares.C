@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "linearLeastSquares.H"
+#include "eigenViews.H"
 #include "error.H"
 
 Foam::scalarField Foam::linearLeastSquares
@@ -21,25 +22,9 @@ Foam::scalarField Foam::linearLeastSquares
             << " columns >= 1 and one right-hand side per row are needed"
             << exit(FatalError);
     }
-    Eigen::MatrixXd M(A.m(), A.n());
-    Eigen::VectorXd v(b.size());
-    for (label i = 0; i < A.m(); ++i)
-    {
-        for (label j = 0; j < A.n(); ++j)
-        {
-            M(i, j) = A(i, j);
-        }
-        v(i) = b[i];
-    }
+    const auto M = eigenViews::view(A);
     // Columns scaled to unit norm: the rank test does not depend on units
-    Eigen::VectorXd s(M.colwise().norm().transpose());
-    for (Eigen::Index j = 0; j < s.size(); ++j)
-    {
-        if (!(s(j) > 0))
-        {
-            s(j) = 1;
-        }
-    }
+    const Eigen::VectorXd s(eigenViews::columnNorms(M));
     const Eigen::MatrixXd Ms(M*s.cwiseInverse().asDiagonal());
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Ms);
     if (qr.rank() < A.n())
@@ -49,11 +34,8 @@ Foam::scalarField Foam::linearLeastSquares
             << " has rank " << qr.rank() << ": the data do not fix the "
             << A.n() << " unknowns" << exit(FatalError);
     }
-    const Eigen::VectorXd x(s.cwiseInverse().asDiagonal()*qr.solve(v));
-    scalarField out(A.n());
-    for (label j = 0; j < A.n(); ++j)
-    {
-        out[j] = x(j);
-    }
-    return out;
+    return eigenViews::field
+    (
+        s.cwiseInverse().asDiagonal()*qr.solve(eigenViews::view(b))
+    );
 }
