@@ -16,10 +16,14 @@ Description
     equal cells and unequal parcels. This utility reads the parcels of a
     cloud at a time (a settled or bubbling bed), weighs each cell by
 
-        w_c = 1 + parcelWeight n_c
+        w_c = 1 + parcelWeight n_c + contactWeight k_c
 
-    (n_c the parcels in cell c, parcelWeight the cost of a parcel against
-    that of a gas cell), decomposes the mesh with these weights by the
+    (n_c the parcels in cell c, k_c the contacts of its parcels, each
+    contact counted half in the cell of each of its two parcels;
+    parcelWeight and contactWeight the cost of a parcel and of a contact
+    against that of a gas cell: the packed parts of a bubbling bed hold
+    more contacts per parcel than the bubbles, and the contact loop is
+    most of a DEM step), decomposes the mesh with these weights by the
     method named, and writes the result as constant/<dataFile>, the cell
     list that decomposePar reads with method manual:
 
@@ -48,7 +52,8 @@ Description
 
 Usage
     bedDecomposition [-time T] [-subdomains N] [-method hierarchical]
-                     [-n "(4 2 1)"] [-parcelWeight 20] [-cloud cloud]
+                     [-n "(4 2 1)"] [-parcelWeight 20] [-contactWeight 0]
+                     [-cloud cloud]
                      [-dataFile F] [-noWrite] [-evaluate] [-work [-skin 0.2]]
 
     \table
@@ -58,6 +63,7 @@ Usage
         -method       | a method that balances weights: hierarchical, simple (or scotch where it is not a stub) | hierarchical
         -n            | the cuts of hierarchical and simple, nx ny nz = N | (nx ny 1), nx ny = N
         -parcelWeight | a parcel's cost against a cell's [-], >= 0    | 20
+        -contactWeight | a contact's cost against a cell's [-], >= 0 | 0
         -cloud        | the cloud's name                              | the only cloud at that time
         -dataFile     | the file written in constant/                 | cellDecomposition
         -noWrite      | report only                                   | off
@@ -209,6 +215,12 @@ int main(int argc, char *argv[])
     (
         "parcelWeight", "w", "a parcel's cost against a cell's (20)"
     );
+    argList::addOption
+    (
+        "contactWeight", "w",
+        "a contact's cost against a cell's, each counted half in the cell"
+        " of each of its parcels (0)"
+    );
     argList::addOption("cloud", "name", "the cloud (the only one)");
     argList::addOption
     (
@@ -279,6 +291,14 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "Option -parcelWeight of bedDecomposition must be >= 0, not "
             << parcelWeight << ": a parcel's cost against a gas cell's"
+            << exit(FatalError);
+    }
+    const scalar contactWeight = args.getOrDefault<scalar>("contactWeight", 0);
+    if (!(contactWeight >= 0))
+    {
+        FatalErrorInFunction
+            << "Option -contactWeight of bedDecomposition must be >= 0, not "
+            << contactWeight << ": a contact's cost against a gas cell's"
             << exit(FatalError);
     }
     const word methodName(args.getOrDefault<word>("method", "hierarchical"));
@@ -395,11 +415,19 @@ int main(int argc, char *argv[])
         }
     }
 
-    // The parcels' weights
+    // The parcels' (and the contacts') weights
     scalarField weights(mesh.nCells(), 1);
     forAll(weights, celli)
     {
         weights[celli] += parcelWeight*parcels[celli];
+    }
+    if (contactWeight > 0)
+    {
+        const scalarField contacts(contactsPerCell(mesh, cloudName));
+        Info<< "Contacts of the parcels (touching pairs): "
+            << label(sum(contacts) + 0.5) << ", weight " << contactWeight
+            << " each" << nl << endl;
+        weights += contactWeight*contacts;
     }
 
     dictionary weighted(decomposeDict);
@@ -421,7 +449,13 @@ int main(int argc, char *argv[])
     (
         "Weighted by the parcels (method " + methodName + ", n "
       + Foam::name(n) + ", cell weight 1 + " + Foam::name(parcelWeight)
-      + " x parcels):",
+      + " x parcels"
+      + (
+            contactWeight > 0
+          ? string(" + " + Foam::name(contactWeight) + " x contacts")
+          : string()
+        )
+      + "):",
         mesh, domain, nDomains, parcels
     );
 
