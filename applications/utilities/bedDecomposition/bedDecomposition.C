@@ -192,6 +192,27 @@ void report
         << endl;
 }
 
+//- The value of a cost option (default if absent), fatal if negative
+scalar costOption
+(
+    const argList& args,
+    const word& name,
+    const scalar deflt,
+    const word& whose
+)
+{
+    const scalar w = args.getOrDefault<scalar>(name, deflt);
+    if (!(w >= 0))
+    {
+        FatalErrorInFunction
+            << "Option -" << name << " of bedDecomposition must be >= 0, not "
+            << w << ": " << whose << " cost against a gas cell's"
+            << exit(FatalError);
+    }
+    return w;
+}
+
+
 #include "engineWork.H"
 
 } // End anonymous namespace
@@ -285,22 +306,10 @@ int main(int argc, char *argv[])
             << "Option -subdomains of bedDecomposition must be >= 1, not "
             << nDomains << exit(FatalError);
     }
-    const scalar parcelWeight = args.getOrDefault<scalar>("parcelWeight", 20);
-    if (!(parcelWeight >= 0))
-    {
-        FatalErrorInFunction
-            << "Option -parcelWeight of bedDecomposition must be >= 0, not "
-            << parcelWeight << ": a parcel's cost against a gas cell's"
-            << exit(FatalError);
-    }
-    const scalar contactWeight = args.getOrDefault<scalar>("contactWeight", 0);
-    if (!(contactWeight >= 0))
-    {
-        FatalErrorInFunction
-            << "Option -contactWeight of bedDecomposition must be >= 0, not "
-            << contactWeight << ": a contact's cost against a gas cell's"
-            << exit(FatalError);
-    }
+    const scalar parcelWeight =
+        costOption(args, "parcelWeight", 20, "a parcel's");
+    const scalar contactWeight =
+        costOption(args, "contactWeight", 0, "a contact's");
     const word methodName(args.getOrDefault<word>("method", "hierarchical"));
     Vector<label> n(nDomains, 1, 1);
     if (args.found("n"))
