@@ -424,6 +424,17 @@ int main(int argc, char *argv[])
         }
     }
 
+    // The parcels' positions and diameters, read once when needed
+    autoPtr<bedParcels> bed;
+    auto parcelData = [&]() -> const bedParcels&
+    {
+        if (!bed.valid())
+        {
+            bed.reset(new bedParcels(mesh, cloudName));
+        }
+        return *bed;
+    };
+
     // The parcels' (and the contacts') weights
     scalarField weights(mesh.nCells(), 1);
     forAll(weights, celli)
@@ -432,7 +443,7 @@ int main(int argc, char *argv[])
     }
     if (contactWeight > 0)
     {
-        const scalarField contacts(contactsPerCell(mesh, cloudName));
+        const scalarField contacts(contactsPerCell(mesh, parcelData()));
         Info<< "Contacts of the parcels (touching pairs): "
             << label(sum(contacts) + 0.5) << ", weight " << contactWeight
             << " each" << nl << endl;
@@ -477,7 +488,7 @@ int main(int argc, char *argv[])
                 << "Option -skin of bedDecomposition must be >= 0, not "
                 << skin << exit(FatalError);
         }
-        engineWork(mesh, domain, nDomains, cloudName, skin);
+        engineWork(mesh, domain, nDomains, parcelData(), skin);
     }
 
     if (!args.found("noWrite"))
