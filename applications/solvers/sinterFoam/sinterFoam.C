@@ -65,6 +65,7 @@ Description
 #include "writtenTimes.H"
 #include "cloudInput.H"
 #include "ironOxidePath.H"
+#include "profiling.H"
 
 int main(int argc, char *argv[])
 {
@@ -106,7 +107,10 @@ int main(int argc, char *argv[])
 
         // Gas -> cloud: parcels move, collide, take drag and heat (and
         // hydrogen)
-        cloud.evolve();
+        {
+            addProfiling(cloudEvolve, "sinterFoam::cloud");
+            cloud.evolve();
+        }
         oxygenSource = cloud.oxygenSource();
         massSource =
             dimensionedScalar("M_O", dimMass/dimMoles, ironOxidePath::MO)
@@ -115,6 +119,7 @@ int main(int argc, char *argv[])
         // Cloud -> gas: voidage from the new parcel positions
         #include "updateVoidage.H"
 
+        addProfiling(gas, "sinterFoam::gas");
         while (pimple.loop())
         {
             #include "UEqn.H"
@@ -131,10 +136,14 @@ int main(int argc, char *argv[])
 
         // H2 and H2O with the parcels' sources
         #include "YEqn.H"
+        endProfiling(gas);
 
         // Gas -> cloud: the parcels follow the change of the gas
         // temperature their implicit heat exchange assumed
-        cloud.correctHeatExchange();
+        {
+            addProfiling(heatCorrection, "sinterFoam::correctHeatExchange");
+            cloud.correctHeatExchange();
+        }
 
         runTime.write();
         writtenTimes::markComplete(runTime, cloud.nParcels());

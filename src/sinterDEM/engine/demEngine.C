@@ -2,6 +2,7 @@
 // Copyright (C) 2026 sinterFoam developers
 
 #include "demEngine.H"
+#include "profiling.H"
 #include <utility>
 #include "keywordSource.H"
 #include "keywordRange.H"
@@ -232,11 +233,13 @@ void Foam::demEngine::beginStep()
     }
     if (rebuildNow)
     {
+        addProfiling(lists, "demEngine::lists");
         keepStates();
         rebuild();
     }
     else if (halo_.valid())
     {
+        addProfiling(ghosts, "demEngine::ghosts");
         halo_->update(particles_, nLocal_, true);
     }
     rebuildRequested_ = false;
@@ -297,10 +300,12 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
     {
         // Kick(s) with the last forces, drift, forces cleared; whether a
         // particle moved more than half the skin since the last build
+        addProfiling(integrateStep, "demEngine::integrate");
         bool expired =
             s == 0
           ? integrate<true, false>(deltaT)
           : integrate<true, true>(deltaT);
+        endProfiling(integrateStep);
 
         vector* __restrict__ F = P.force.data();
         vector* __restrict__ M = P.torque.data();
@@ -315,24 +320,40 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
             // Ghosts at the new positions (and temperatures, with
             // conduction), then a rebuild everywhere if any processor needs
             // one (the ghosts are chosen again with it)
+            addProfiling(ghosts, "demEngine::ghosts");
             halo_->update(P, nL, conduction_.active());
+            endProfiling(ghosts);
+            // Where the processors wait for each other (load imbalance)
+            addProfiling(wait, "demEngine::wait");
             reduce(expired, orOp<bool>());
         }
         if (expired)
         {
-            keepStates();
+            addProfiling(lists, "demEngine::lists");
+            {
+                addProfiling(keep, "demEngine::lists::keepStates");
+                keepStates();
+            }
             rebuild();
         }
 
         time_ += deltaT;
-        kernel_->pairs(P, pairs_, deltaT, time_);
-        kernel_->walls
-        (
-            P, wallContacts_, walls_, deltaT, time_, wallFaceImpulse_.data()
-        );
+        {
+            addProfiling(pairLoop, "demEngine::pairs");
+            kernel_->pairs(P, pairs_, deltaT, time_);
+        }
+        {
+            addProfiling(wallLoop, "demEngine::walls");
+            kernel_->walls
+            (
+                P, wallContacts_, walls_, deltaT, time_,
+                wallFaceImpulse_.data()
+            );
+        }
 
         if (conduction_.active())
         {
+            addProfiling(conductionStep, "demEngine::conduction");
             heatFlow_.resize(P.size());
             heatFlow_ = 0;
             scalar* __restrict__ Q = heatFlow_.data();

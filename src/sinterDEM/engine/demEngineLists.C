@@ -5,6 +5,7 @@
 // their lists, the lists rebuilt and their expiry (demEngine.H)
 
 #include "demEngine.H"
+#include "profiling.H"
 #include "demEngineDetail.H"
 #include <utility>
 
@@ -124,11 +125,13 @@ void Foam::demEngine::rebuild()
 
     if (spatialSort_ && rMax > 0)
     {
+        addProfiling(sort, "demEngine::lists::sort");
         sortLocals(2*rMax + reach);
     }
 
     if (halo_.valid())
     {
+        addProfiling(ghosts, "demEngine::lists::ghosts");
         halo_->select(P, nL, 2*rMax + reach);
     }
 
@@ -145,6 +148,7 @@ void Foam::demEngine::rebuild()
     }
 
     // Pending states by particle
+    addProfiling(pairLists, "demEngine::lists::pairs");
     labelList start;
     labelList sorted;
     groupByParticle(pendingPairParticle_, nL, start, sorted);
@@ -161,6 +165,8 @@ void Foam::demEngine::rebuild()
     );
     bins_.pairs(P, nL, reach, pairs_);
     law_->setPairCoefficients(P, pairs_);
+    endProfiling(pairLists);
+    addProfiling(pairStates, "demEngine::lists::pairStates");
 
     // A pair's state is kept from the side of its first particle; a state
     // kept from the other side (the particles changed order) is flipped
@@ -193,8 +199,10 @@ void Foam::demEngine::rebuild()
         }
     }
     pairs_.compactStates(blockScratch_);
+    endProfiling(pairStates);
 
     // Wall contacts of local particles, states by face centre
+    addProfiling(wallLists, "demEngine::lists::walls");
     wallContacts_.clearWithRoom(label(1.05*lastWalls_) + 64);
     walls_.candidates(P, nL, skin_ + conduction_.wallRange(rMax), wallContacts_);
     law_->setWallCoefficients(P, walls_, wallContacts_);

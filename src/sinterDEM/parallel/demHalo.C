@@ -7,7 +7,9 @@
 #include "UIPstream.H"
 #include "UOPstream.H"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstdint>
 #include <unordered_set>
 
@@ -101,16 +103,19 @@ void Foam::demHalo::select
           | ((std::uint64_t(k) & 0x1FFFFF) << 42);
     };
 
+    // This processor's occupied bins, each once
     List<FixedList<label, 3>> bin(nLocal);
-    std::unordered_set<std::uint64_t> ownBins;
+    std::vector<std::uint64_t> ownBins(nLocal);
     for (label i = 0; i < nLocal; ++i)
     {
         bin[i] = binOf(P.position[i]);
-        ownBins.insert(key(bin[i][0], bin[i][1], bin[i][2]));
+        ownBins[i] = key(bin[i][0], bin[i][1], bin[i][2]);
     }
+    std::sort(ownBins.begin(), ownBins.end());
+    ownBins.erase(std::unique(ownBins.begin(), ownBins.end()), ownBins.end());
 
     // The neighbours' occupied bins
-    List<std::unordered_set<std::uint64_t>> nbrBins(neighbours_.size());
+    List<labelList> nbrBins(neighbours_.size());
     {
         PstreamBuffers binBuffers(Pstream::commsTypes::nonBlocking);
         labelList mine(3*ownBins.size());
@@ -130,44 +135,107 @@ void Foam::demHalo::select
         forAll(neighbours_, k)
         {
             UIPstream is(neighbours_[k], binBuffers);
-            labelList theirs(is);
-            nbrBins[k].reserve(theirs.size()/3);
-            for (label m = 0; m + 2 < theirs.size(); m += 3)
-            {
-                nbrBins[k].insert(key(theirs[m], theirs[m+1], theirs[m+2]));
-            }
+            is >> nbrBins[k];
         }
     }
 
+    // A particle goes to a neighbour when its bin is one of the 27 around
+    // a bin of the neighbour: those bins marked once on a dense grid over
+    // the part of the neighbour's enlarged region that this region covers
+    // (one look-up per particle), or, should that grid be far larger than
+    // the particles, looked up in a hash set (27 look-ups per particle)
     sendMap_.setSize(neighbours_.size());
     forAll(neighbours_, k)
     {
         const boundBox& box = grown[neighbours_[k]];
-        const std::unordered_set<std::uint64_t>& theirs = nbrBins[k];
+        const labelList& theirs = nbrBins[k];
         DynamicList<label> send;
-        for (label i = 0; i < nLocal; ++i)
+
+        const FixedList<label, 3> lo = binOf(max(box.min(), region.min()));
+        const FixedList<label, 3> hi = binOf(min(box.max(), region.max()));
+        const scalar nx = scalar(hi[0] - lo[0] + 1);
+        const scalar ny = scalar(hi[1] - lo[1] + 1);
+        const scalar nz = scalar(hi[2] - lo[2] + 1);
+        const bool overlap = nx > 0 && ny > 0 && nz > 0;
+        const scalar nGrid = overlap ? nx*ny*nz : 0;
+
+        if (overlap && nGrid <= 64*(nLocal + theirs.size()/3) + 4096)
         {
-            if (!box.contains(P.position[i]))
+            const label mx = label(nx), my = label(ny), mz = label(nz);
+            std::vector<char> near(size_t(mx)*my*mz, 0);
+            for (label m = 0; m + 2 < theirs.size(); m += 3)
             {
-                continue;
-            }
-            bool near = false;
-            for (label dk = -1; dk <= 1 && !near; ++dk)
-            {
-                for (label dj = -1; dj <= 1 && !near; ++dj)
+                for (label dk = -1; dk <= 1; ++dk)
                 {
-                    for (label di = -1; di <= 1 && !near; ++di)
+                    const label c = theirs[m+2] + dk - lo[2];
+                    if (c < 0 || c >= mz) continue;
+                    for (label dj = -1; dj <= 1; ++dj)
                     {
-                        near = theirs.count
-                        (
-                            key(bin[i][0] + di, bin[i][1] + dj, bin[i][2] + dk)
-                        );
+                        const label b = theirs[m+1] + dj - lo[1];
+                        if (b < 0 || b >= my) continue;
+                        for (label di = -1; di <= 1; ++di)
+                        {
+                            const label a = theirs[m] + di - lo[0];
+                            if (a < 0 || a >= mx) continue;
+                            near[size_t(a) + size_t(mx)*(b + size_t(my)*c)] = 1;
+                        }
                     }
                 }
             }
-            if (near)
+            for (label i = 0; i < nLocal; ++i)
             {
-                send.append(i);
+                if (!box.contains(P.position[i]))
+                {
+                    continue;
+                }
+                // Inside the box and the region: its bin is on the grid
+                // (the bin of a coordinate does not decrease with it)
+                const label a = bin[i][0] - lo[0];
+                const label b = bin[i][1] - lo[1];
+                const label c = bin[i][2] - lo[2];
+                if (near[size_t(a) + size_t(mx)*(b + size_t(my)*c)])
+                {
+                    send.append(i);
+                }
+            }
+        }
+        else if (overlap)
+        {
+            std::unordered_set<std::uint64_t> theirSet;
+            theirSet.reserve(theirs.size()/3);
+            for (label m = 0; m + 2 < theirs.size(); m += 3)
+            {
+                theirSet.insert(key(theirs[m], theirs[m+1], theirs[m+2]));
+            }
+            for (label i = 0; i < nLocal; ++i)
+            {
+                if (!box.contains(P.position[i]))
+                {
+                    continue;
+                }
+                bool near = false;
+                for (label dk = -1; dk <= 1 && !near; ++dk)
+                {
+                    for (label dj = -1; dj <= 1 && !near; ++dj)
+                    {
+                        for (label di = -1; di <= 1 && !near; ++di)
+                        {
+                            near = theirSet.count
+                            (
+                                key
+                                (
+                                    bin[i][0] + di,
+                                    bin[i][1] + dj,
+                                    bin[i][2] + dk
+                                )
+                            );
+                        }
+                    }
+                }
+                if (near)
+                {
+                    send.append(i);
+                }
             }
         }
         sendMap_[k].transfer(send);

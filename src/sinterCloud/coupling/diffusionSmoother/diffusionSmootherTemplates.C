@@ -7,6 +7,7 @@
 #include "laplacianScheme.H"
 #include "IStringStream.H"
 #include "surfaceFields.H"
+#include "profiling.H"
 
 template<class Type>
 Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
@@ -16,6 +17,7 @@ Foam::tmp<Foam::Field<Type>> Foam::diffusionSmoother::smooth
 ) const
 {
     typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
+    addProfiling(smoothing, "diffusionSmoother::smooth");
 
     // Unregistered work fields
     auto io = [&](const word& fieldName)

@@ -5,6 +5,7 @@
 #include "coarseGrainFactor.H"
 #include "cloudInput.H"
 #include "LatticeBedInjection.H"
+#include "profiling.H"
 
 template<class CloudType>
 Foam::DEMCloud<CloudType>::DEMCloud
@@ -129,7 +130,9 @@ void Foam::DEMCloud<CloudType>::evolve()
 
         typename parcelType::trackingData td(*this);
         this->solve(*this, td);
+        addProfiling(bedFields, "DEMCloud::bedFields");
         updateBedFields();
+        endProfiling(bedFields);
 
         const label n1 = returnReduce(this->size(), sumOp<label>());
         const label added = parcelsInjected() - added0;
@@ -218,7 +221,9 @@ void Foam::DEMCloud<CloudType>::motion
     demEngine& engine = collision_->engine();
 
     // 1. The engine's particles follow the parcels
+    addProfiling(sync, "DEMCloud::syncParticles");
     collision_->syncParticles();
+    endProfiling(sync);
 
     // 1b. The hydrogen reduction, from the state at the start of the step
     if (chemistry_->reduction())
@@ -241,10 +246,14 @@ void Foam::DEMCloud<CloudType>::motion
     }
 
     // 2. Fluid forces and heat, once per parcel, at the start position
+    addProfiling(gasStart, "DEMCloud::gasExchange");
     gas_->start(cloud, td, dt, engine);
+    endProfiling(gasStart);
 
     // 3. The DEM sub-steps
+    addProfiling(collide, "DEMCloud::collide");
     collision_->collide(dt);
+    endProfiling(collide);
 
     // The engine sorted its particles: the parcels and their sources follow
     if (engine.moved())
@@ -259,6 +268,7 @@ void Foam::DEMCloud<CloudType>::motion
 
     // 4. The gas loses the drag impulse; each parcel's displacement to
     // its particle's end position, for the track
+    addProfiling(finish, "DEMCloud::gasImpulse");
     const demParticles& P = engine.particles();
     for (parcelType& p : cloud)
     {
@@ -279,7 +289,10 @@ void Foam::DEMCloud<CloudType>::motion
         engine.invalidateLists();
     }
 
+    endProfiling(finish);
+
     // 5. One track per parcel along its displacement
+    addProfiling(track, "DEMCloud::track");
     CloudType::move(cloud, td, dt);
     this->updateCellOccupancy();
 }
