@@ -88,6 +88,7 @@ void Foam::DEMGasCoupling<CloudType>::start
         // the particle's state (the engine's)
         const label n = p.demIndex();
         const label celli = p.cell();
+        const point x = p.position();
         const vector& U = P.velocity[n];
         p.setCellValues(cloud, td);
         td.Uc() =
@@ -120,7 +121,7 @@ void Foam::DEMGasCoupling<CloudType>::start
         scalar dhsTrans, hAdt;
         scalar& T = P.temperature[n];
         const scalar Tn = T;
-        const scalar TgAt = exchange_.gasTemperatureAt(celli, p.position());
+        const scalar TgAt = exchange_.gasTemperatureAt(celli, x);
         const scalar mCp = m*Cp;
         const scalar Tconv =
             p.calcGasHeat(cloud, td, dt, Tn, U, mCp, dhsTrans, hAdt);
@@ -146,7 +147,7 @@ void Foam::DEMGasCoupling<CloudType>::start
         );
 
         // The position after tracking
-        P.position[n] = p.position();
+        P.position[n] = x;
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();
