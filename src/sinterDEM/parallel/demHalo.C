@@ -6,12 +6,25 @@
 #include "PstreamBuffers.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
+#include "registerSwitch.H"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 #include <cstdint>
 #include <unordered_set>
+
+int Foam::demHalo::gridPerParticle
+(
+    Foam::debug::optimisationSwitch("demHaloGridPerParticle", 64)
+);
+registerOptSwitch
+(
+    "demHaloGridPerParticle",
+    int,
+    Foam::demHalo::gridPerParticle
+);
+
 
 Foam::demHalo::demHalo(const boundBox& meshBox)
 :
@@ -144,6 +157,15 @@ void Foam::demHalo::select
     // the part of the neighbour's enlarged region that this region covers
     // (one look-up per particle), or, should that grid be far larger than
     // the particles, looked up in a hash set (27 look-ups per particle)
+    static bool reported = false;
+    if (gridPerParticle != 64 && !reported)
+    {
+        Info<< "demHalo: dense grid of bins up to " << gridPerParticle
+            << " per particle (OptimisationSwitch demHaloGridPerParticle)"
+            << endl;
+        reported = true;
+    }
+
     sendMap_.setSize(neighbours_.size());
     forAll(neighbours_, k)
     {
@@ -159,7 +181,11 @@ void Foam::demHalo::select
         const bool overlap = nx > 0 && ny > 0 && nz > 0;
         const scalar nGrid = overlap ? nx*ny*nz : 0;
 
-        if (overlap && nGrid <= 64*(nLocal + theirs.size()/3) + 4096)
+        if
+        (
+            overlap && gridPerParticle > 0
+         && nGrid <= scalar(gridPerParticle)*(nLocal + theirs.size()/3) + 4096
+        )
         {
             const label mx = label(nx), my = label(ny), mz = label(nz);
             std::vector<char> near(size_t(mx)*my*mz, 0);
