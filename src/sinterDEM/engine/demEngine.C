@@ -35,8 +35,6 @@ Foam::demEngine::demEngine
     ),
     skin_(0),
     nLocal_(0),
-    relativeExpiry_(false),
-    builtRMax_(0),
     listsValid_(false),
     rebuildRequested_(false),
     lastPairs_(0),
@@ -48,19 +46,6 @@ Foam::demEngine::demEngine
 {
     pairs_.setLayout(law_->nCoeffs(), slots_.stride(), false);
     wallContacts_.setLayout(law_->nWallCoeffs(), slots_.stride(), true);
-
-    const word expiry(dict.lookupOrDefault<word>("listExpiry", "halfSkin"));
-    if (expiry == "relativeDisplacement")
-    {
-        relativeExpiry_ = true;
-    }
-    else if (expiry != "halfSkin")
-    {
-        FatalIOErrorInKeyword(dict, "listExpiry")
-            << "Unknown listExpiry " << expiry << nl
-            << "Valid types are (halfSkin relativeDisplacement)"
-            << exit(FatalIOError);
-    }
 }
 
 
@@ -99,11 +84,6 @@ void Foam::demEngine::setHalo(autoPtr<demHalo>&& halo)
     keepStates();
     halo_ = std::move(halo);
     listsValid_ = false;
-    if (relativeExpiry_ && halo_.valid())
-    {
-        Info<< "demEngine: listExpiry relativeDisplacement is for serial"
-            << " runs; this decomposed run uses halfSkin" << endl;
-    }
 }
 
 
@@ -176,7 +156,7 @@ void Foam::demEngine::computeForces(const scalar deltaT)
 
 
 template<bool Drift, bool TwoKicks>
-Foam::scalar Foam::demEngine::integrate(const scalar deltaT)
+bool Foam::demEngine::integrate(const scalar deltaT)
 {
     demParticles& P = particles_;
     const label nL = nLocal();
@@ -232,7 +212,7 @@ Foam::scalar Foam::demEngine::integrate(const scalar deltaT)
         }
     }
 
-    return track ? moved2 : GREAT;
+    return !track || moved2 > sqr(0.5*skin_);
 }
 
 
@@ -321,11 +301,10 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
         // Kick(s) with the last forces, drift, forces cleared; whether a
         // particle moved more than half the skin since the last build
         addProfiling(integrateStep, "demEngine::integrate");
-        const scalar moved2 =
+        bool expired =
             s == 0
           ? integrate<true, false>(deltaT)
           : integrate<true, true>(deltaT);
-        bool expired = listsExpired(moved2);
         endProfiling(integrateStep);
 
         vector* __restrict__ F = P.force.data();

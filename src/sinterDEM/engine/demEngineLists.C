@@ -237,11 +237,6 @@ void Foam::demEngine::rebuild()
     lastPairs_ = pairs_.size();
     lastWalls_ = wallContacts_.size();
     builtAt_ = SubList<vector>(P.position, nL);
-    if (relativeExpiry_ && !halo_.valid())
-    {
-        builtRMax_ = rMax;
-        setExpiryRegions(2*rMax + reach);
-    }
     listsValid_ = true;
     recordIndexValid_ = false;
     ++nBuilds_;
@@ -255,163 +250,12 @@ bool Foam::demEngine::listsExpired() const
     {
         return true;
     }
+    const scalar limit2 = sqr(0.5*skin_);
     const vector* __restrict__ x = particles_.position.cdata();
     const vector* __restrict__ x0 = builtAt_.cdata();
-    scalar moved2 = 0;
     for (label i = 0; i < nL; ++i)
     {
-        moved2 = max(moved2, magSqr(x[i] - x0[i]));
-    }
-    return listsExpired(moved2);
-}
-
-
-bool Foam::demEngine::listsExpired(const scalar moved2) const
-{
-    if (!(moved2 > sqr(0.5*skin_)))
-    {
-        return false;
-    }
-    if (!relativeExpiry_ || halo_.valid() || moved2 > sqr(skin_))
-    {
-        return true;
-    }
-    return relativeDisplacementExpired();
-}
-
-
-void Foam::demEngine::setExpiryRegions(const scalar binWidth)
-{
-    const label nL = nLocal();
-    const UList<vector> x(SubList<vector>(particles_.position, nL));
-    expiryRegion_.setSize(nL);
-    if (nL == 0)
-    {
-        expiryDims_ = 1;
-        return;
-    }
-
-    // Regions of twice the list bins' width (wider if there would be more
-    // regions than particles)
-    const boundBox box(x, false);
-    const vector span = box.span();
-    scalar width = 2*binWidth;
-    while (true)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            expiryDims_[d] = label(span[d]/width) + 1;
-        }
-        if (scalar(expiryDims_[0])*expiryDims_[1]*expiryDims_[2] <= nL + 27)
-        {
-            break;
-        }
-        width *= 1.26;
-    }
-    const point& o = box.min();
-    forAll(x, i)
-    {
-        label index[3];
-        for (direction d = 0; d < 3; ++d)
-        {
-            index[d] = min(label((x[i][d] - o[d])/width), expiryDims_[d] - 1);
-        }
-        expiryRegion_[i] =
-            index[0] + expiryDims_[0]*(index[1] + expiryDims_[1]*index[2]);
-    }
-    const label nRegions = expiryDims_[0]*expiryDims_[1]*expiryDims_[2];
-    regionLo_.setSize(nRegions);
-    regionHi_.setSize(nRegions);
-}
-
-
-bool Foam::demEngine::relativeDisplacementExpired() const
-{
-    const label nL = nLocal();
-    if (expiryRegion_.size() != nL)
-    {
-        return true;
-    }
-    const vector* __restrict__ x = particles_.position.cdata();
-    const vector* __restrict__ x0 = builtAt_.cdata();
-    const label* __restrict__ region = expiryRegion_.cdata();
-    vector* __restrict__ lo = regionLo_.data();
-    vector* __restrict__ hi = regionHi_.data();
-    const label nRegions = regionLo_.size();
-
-    // Each region's box of the displacements, and the box of all
-    const vector empty = vector::uniform(GREAT);
-    for (label r = 0; r < nRegions; ++r)
-    {
-        lo[r] = empty;
-        hi[r] = -empty;
-    }
-    vector allLo = empty;
-    vector allHi = -empty;
-    for (label i = 0; i < nL; ++i)
-    {
-        const vector d = x[i] - x0[i];
-        const label r = region[i];
-        lo[r] = min(lo[r], d);
-        hi[r] = max(hi[r], d);
-        allLo = min(allLo, d);
-        allHi = max(allHi, d);
-    }
-
-    // Pairs two regions or more apart started 2 (2 r_max + skin) apart
-    if (magSqr(allHi - allLo) >= sqr(2*builtRMax_ + 2*skin_))
-    {
-        return true;
-    }
-
-    // Each box widened over the neighbours, one direction at a time: a
-    // running min/max over three regions (empty regions are neutral)
-    const label stride[3] =
-        {1, expiryDims_[0], expiryDims_[0]*expiryDims_[1]};
-    for (direction d = 0; d < 3; ++d)
-    {
-        const label n = expiryDims_[d];
-        if (n < 2)
-        {
-            continue;
-        }
-        const label step = stride[d];
-        // Lines along d: every region whose index along d is 0
-        for (label r0 = 0; r0 < nRegions; ++r0)
-        {
-            if ((r0/step) % n != 0)
-            {
-                continue;
-            }
-            vector prevLo = lo[r0];
-            vector prevHi = hi[r0];
-            for (label k = 0; k < n; ++k)
-            {
-                const label r = r0 + k*step;
-                const vector curLo = lo[r];
-                const vector curHi = hi[r];
-                vector wLo = min(prevLo, curLo);
-                vector wHi = max(prevHi, curHi);
-                if (k + 1 < n)
-                {
-                    wLo = min(wLo, lo[r + step]);
-                    wHi = max(wHi, hi[r + step]);
-                }
-                lo[r] = wLo;
-                hi[r] = wHi;
-                prevLo = curLo;
-                prevHi = curHi;
-            }
-        }
-    }
-
-    // Only the regions that hold particles: a pair of the regions around
-    // an empty one lies in the widened box of one of them, or two apart
-    const scalar skin2 = sqr(skin_);
-    for (label i = 0; i < nL; ++i)
-    {
-        const label r = region[i];
-        if (magSqr(hi[r] - lo[r]) >= skin2)
+        if (magSqr(x[i] - x0[i]) > limit2)
         {
             return true;
         }

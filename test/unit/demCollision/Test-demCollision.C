@@ -50,7 +50,6 @@ Description
 #include "demEngine.H"
 #include "HertzCollision.H"
 #include "mathematicalConstants.H"
-#include "Random.H"
 
 using namespace Foam;
 
@@ -782,108 +781,6 @@ void caseSpatialSort()
 }
 
 
-//- A block of 8 x 8 x 8 spheres (radii 0.9-1.0 r, 2.1 r apart) flying
-//  at 1 m/s, each with a random velocity of up to 0.05 m/s of its own,
-//  and one sphere shot into it at 0.5 m/s more; no walls, no gravity
-void fillFlyingBlock(demEngine& dem)
-{
-    demParticles& P = dem.resetParticles();
-    Random rng(7);
-    const vector U(1, 0.5, 0);
-    label id = 0;
-    const label n = 8;
-    for (label k = 0; k < n; ++k)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            for (label i = 0; i < n; ++i)
-            {
-                const scalar ri = r*(0.9 + 0.1*((i + 2*j + 3*k) % 3)/2);
-                const point x(2.1*r*i, 2.1*r*j, 2.1*r*k);
-                vector u(U);
-                for (direction d = 0; d < 3; ++d)
-                {
-                    u[d] += 0.05*(2*rng.sample01<scalar>() - 1);
-                }
-                P.append(x, u, Zero, ri, rho, id++);
-            }
-        }
-    }
-    P.append
-    (
-        point(-6*r, 2.1*r*3.5, 2.1*r*3.5), U + vector(0.5, 0, 0), Zero,
-        r, rho, id++
-    );
-}
-
-
-//- Number of overlapping pairs, all pairs tested
-label touchingPairs(const demParticles& P)
-{
-    label count = 0;
-    const label n = P.size();
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = i + 1; j < n; ++j)
-        {
-            if
-            (
-                magSqr(P.position[i] - P.position[j])
-              < sqr(P.radius[i] + P.radius[j])
-            )
-            {
-                ++count;
-            }
-        }
-    }
-    return count;
-}
-
-
-//- The lists' expiry by relative displacement (listExpiry
-//  relativeDisplacement) on a flying block (fillFlyingBlock): at every
-//  step the engine's count of touching pairs equals the count over all
-//  pairs (no contact missed by lists that live longer), the lists are
-//  built fewer times than with halfSkin, and the motion equals
-//  halfSkin's to round-off
-void caseRelativeExpiry()
-{
-    const dictionary dict(settings("HertzMindlin", 0.5, 0.5));
-    dictionary relative(dict);
-    relative.set("listExpiry", word("relativeDisplacement"));
-    demEngine a(dict, materials(), 1);
-    demEngine b(relative, materials(), 1);
-    fillFlyingBlock(a);
-    fillFlyingBlock(b);
-    const HertzCollision hertz(r, mass(), Yp, nup);
-    const scalar dt = hertz.contactTime(0.1)/50;
-    a.initialise();
-    b.initialise();
-
-    const label nSteps = 4000;
-    label missed = 0;
-    label mostContacts = 0;
-    for (label step = 0; step < nSteps; ++step)
-    {
-        a.step(dt);
-        b.step(dt);
-        const label all = touchingPairs(b.particles());
-        missed += mag(all - b.nPairContacts());
-        mostContacts = max(mostContacts, all);
-    }
-    const scalar d = largestDifference(a, b);
-    Info<< "     " << b.particles().size() << " particles, " << nSteps
-        << " steps of " << dt << " s: list builds " << a.nBuilds()
-        << " (halfSkin), " << b.nBuilds() << " (relativeDisplacement);"
-        << " up to " << mostContacts << " touching pairs; largest position"
-        << " difference " << d << " m" << nl;
-    check("touching pairs not counted by the relative lists", missed, 0, 0);
-    check("the block's particles collide", mostContacts > 10, 1, 0);
-    check("fewer list builds than halfSkin", b.nBuilds() < a.nBuilds(), 1, 0);
-    check("relative expiry within 1e-10 r of halfSkin", d < 1e-10*r, 1, 0);
-}
-
-
 //- Construct the engine from settings with one bad entry: must be fatal
 void caseBadInput(const word& what)
 {
@@ -904,10 +801,6 @@ void caseBadInput(const word& what)
     else if (what == "negativeModulus")
     {
         mats.subDict("steel").set("youngsModulus", -5e6);
-    }
-    else if (what == "listExpiry")
-    {
-        dict.set("listExpiry", word("always"));
     }
     else if (what == "hugeModulus")
     {
@@ -934,14 +827,13 @@ int main(int argc, char *argv[])
     argList::addOption
     (
         "case", "name",
-        "headOn|wall|oblique|settledBed|persistentState|spatialSort"
-        "|relativeExpiry|badInput"
+        "headOn|wall|oblique|settledBed|persistentState|spatialSort|badInput"
     );
     argList::addOption
     (
         "bad", "entry",
         "with -case badInput: unknownLaw|poissonsRatio|restitution"
-        "|negativeModulus|hugeModulus|listExpiry"
+        "|negativeModulus"
     );
     argList args(argc, argv);
 
@@ -953,14 +845,13 @@ int main(int argc, char *argv[])
     else if (which == "settledBed") caseSettledBed();
     else if (which == "persistentState") casePersistentState();
     else if (which == "spatialSort") caseSpatialSort();
-    else if (which == "relativeExpiry") caseRelativeExpiry();
     else if (which == "badInput") caseBadInput(args.get<word>("bad"));
     else
     {
         FatalErrorInFunction
             << "Unknown -case " << which
             << ". Valid: headOn wall oblique settledBed persistentState"
-            << " spatialSort relativeExpiry badInput"
+            << " spatialSort"
             << exit(FatalError);
     }
 

@@ -117,8 +117,8 @@ Foam::DEMCollision<CloudType>::DEMCollision
     DynamicList<word> valid
     {
         "contactLaw", "particleParticle", "particleWall", "walls", "deltaT",
-        "collisionTimeFraction", "impactVelocity", "skin", "listExpiry",
-        "cohesionModel", "conduction"
+        "collisionTimeFraction", "impactVelocity", "skin", "cohesionModel",
+        "conduction"
     };
     for (const word& law : contactLaw::dictionaryConstructorTablePtr_->toc())
     {
