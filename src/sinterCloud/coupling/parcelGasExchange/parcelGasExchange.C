@@ -124,29 +124,48 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::parcelGasExchange::Sh
 
     // Explicit exchange (and that of particles that left in the step),
     // per volume and time, spread over the smoothing length
-    fvScalarMatrix& Sh = tSh.ref();
-    Sh.source() -= V*smoother.smooth<scalar>(hsTrans/(V*dt), "cloudHeat");
-
+    //
     // Implicit: each cell towards its particles,
     //     smoothed:  S(sum m c_p f T_p/(V dt)) - B T_g,
     //     local:     S(sum m c_p f (T_p - T_g^0(x_p))/(V dt)) - B (T_g - T_g^0),
     //     B = S(sum m c_p f/(V dt)),  T_g = T_g^0 + (h - h^0)/c_p
+    //
+    // The fields smoothed in one block solve
+    scalarField explicitHeat(hsTrans/(V*dt));
+    scalarField A;
+    scalarField B;
+    scalarField BTg;
+    DynamicList<scalarField*> fields({&explicitHeat});
+    DynamicList<word> names({"cloudHeat"});
     if (implicit_)
     {
-        const scalarField A
-        (
-            smoother.smooth<scalar>(target_/(V*dt), "cloudHeatTarget")
-        );
-        const scalarField B
-        (
-            smoother.smooth<scalar>(hsCoeff/(V*dt), "cloudHeatCoeff")
-        );
-        const scalarField BTg
-        (
-            local_
-          ? smoother.smooth<scalar>(gas_/(V*dt), "cloudHeatGas")
-          : B*gasT0_
-        );
+        A = target_/(V*dt);
+        B = hsCoeff/(V*dt);
+        fields.append({&A, &B});
+        names.append({"cloudHeatTarget", "cloudHeatCoeff"});
+        if (local_)
+        {
+            BTg = gas_/(V*dt);
+            fields.append(&BTg);
+            names.append("cloudHeatGas");
+        }
+    }
+    UPtrList<scalarField> smoothed(fields.size());
+    forAll(fields, k)
+    {
+        smoothed.set(k, fields[k]);
+    }
+    UPtrList<vectorField> none;
+    smoother.smooth(smoothed, names, none, wordList());
+
+    fvScalarMatrix& Sh = tSh.ref();
+    Sh.source() -= V*explicitHeat;
+    if (implicit_)
+    {
+        if (!local_)
+        {
+            BTg = B*gasT0_;
+        }
         const scalarField BbyCp(B/Cp);
         Sh.diag() -= V*BbyCp;
         Sh.source() -= V*(A - BTg + BbyCp*hs.oldTime().primitiveField());

@@ -90,13 +90,17 @@ void Foam::VoidageDragForce<CloudType>::cacheFields(const bool store)
 
     const volumeFractionModel& mapping = coupling_.volumeFraction();
     const diffusionSmoother& smoother = coupling_.smoother();
-    const scalarField V
+    // Both smoothed in one block solve
+    scalarField V(mapping.theta(parcels, volume));
+    scalarField A(mapping.theta(parcels, surface));
+    UPtrList<scalarField> fields(2);
+    fields.set(0, &V);
+    fields.set(1, &A);
+    UPtrList<vectorField> none;
+    smoother.smooth
     (
-        smoother.smooth(mapping.theta(parcels, volume)(), "dragSolidVolume")
-    );
-    const scalarField A
-    (
-        smoother.smooth(mapping.theta(parcels, surface)(), "dragSolidSurface")
+        fields, wordList({"dragSolidVolume", "dragSolidSurface"}),
+        none, wordList()
     );
 
     dSauter_.setSize(V.size());
