@@ -234,7 +234,6 @@ void Foam::diffusionSmoother::smooth
     PtrList<scalarField> pA(nRhs);
     List<scalar> normFactor(nRhs);
     List<scalar> wArA(nRhs, solverPerformance::great_);
-    List<scalar> wArAold(nRhs);
     List<scalar> sums(nRhs);
     boolList active(nRhs, false);
     const label nTotal = returnReduce(nCells, sumOp<label>());
@@ -317,7 +316,6 @@ void Foam::diffusionSmoother::smooth
             if (active[m])
             {
                 act[k] = m;
-                wArAold[m] = wArA[m];
                 wMut[k] = wA[m].data();
                 wOf[k] = wA[m].cdata();
                 rOf[k] = rA[m].cdata();
@@ -344,6 +342,8 @@ void Foam::diffusionSmoother::smooth
         for (label j = 0; j < k; ++j)
         {
             const label m = act[j];
+            // beta is the new w.r over the last one
+            const scalar beta = out[j]/wArA[m];
             wArA[m] = out[j];
             scalar* __restrict__ p = pA[m].data();
             const scalar* __restrict__ w = wA[m].cdata();
@@ -356,7 +356,6 @@ void Foam::diffusionSmoother::smooth
             }
             else
             {
-                const scalar beta = wArA[m]/wArAold[m];
                 for (label cell = 0; cell < nCells; ++cell)
                 {
                     p[cell] = w[cell] + beta*p[cell];
