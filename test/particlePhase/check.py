@@ -92,6 +92,38 @@ def serial(case):
     print(f'temperature distribution weights {tw} (by hand [0, 0, 4, 0], 300 K on'
           f' the edge of [300, 305)): {"ok" if tgood else "FAIL"}')
     ok &= sgood and tgood
+
+    # cellZone upper (the cells above z = 6 mm): the rising beads once
+    # they cross 6 mm, alone in their cells
+    upper = rows(case / 'postProcessing/upper/0/particleStatistics.dat')
+    bad = 0
+    first = None
+    for k in range(STEPS):
+        t = (k + 1) * DT
+        if z_up(t) < 6e-3:
+            expect = [t] + [0] * 12
+        else:
+            first = first if first is not None else t
+            expect = [t, 2, 2, 300, 0, 300, 300, 0.09, 0, 0.09, 0,
+                      z_up(t), z_up(t)]
+        u = upper[k] if k < len(upper) else []
+        if not (len(u) == len(expect) and all(close(a, b) for a, b in zip(u, expect))):
+            bad += 1
+            if bad <= 3:
+                print(f'cellZone upper differs at t = {t:g}: {u}, expected {expect}')
+    print(f'cellZone upper: {len(upper)} evaluations, {bad} differ from the hand'
+          f' values (empty until t = {first:g} s, then the two rising beads)')
+    ok &= len(upper) == STEPS and bad == 0
+    speed = rows(case / 'postProcessing/upper/0.03/speedDistribution.dat')
+    w = [r[3] for r in speed]
+    temp = rows(case / 'postProcessing/upper/0.03/temperatureDistribution.dat')
+    tw = [r[3] for r in temp]
+    zgood = (w == [0, 0, 0, 2, 0, 0] and close(speed[3][5], 40)
+             and tw == [0, 0, 2, 0] and close(temp[2][5], 0.2))
+    print(f'cellZone upper distributions: speed {w} (by hand [0, 0, 0, 2, 0, 0],'
+          f' pdf 40 s/m), temperature {tw} (by hand [0, 0, 2, 0]):'
+          f' {"ok" if zgood else "FAIL"}')
+    ok &= zgood
     return ok
 
 
@@ -116,7 +148,10 @@ def main():
         for f in ('particles/0/particleStatistics.dat', 'flux/0/solidsFlux.dat',
                   'flux/0.03/solidsFluxProfile.dat',
                   'particles/0.03/speedDistribution.dat',
-                  'particles/0.03/temperatureDistribution.dat'):
+                  'particles/0.03/temperatureDistribution.dat',
+                  'upper/0/particleStatistics.dat',
+                  'upper/0.03/speedDistribution.dat',
+                  'upper/0.03/temperatureDistribution.dat'):
             ok &= same(case / 'postProcessing' / f, ref / 'postProcessing' / f)
     elif mode == 'restart':
         ref = Path(sys.argv[3])

@@ -38,7 +38,14 @@ Foam::functionObjects::particleStatistics::particleStatistics
 
     if (Pstream::master() && writeToFile())
     {
-        writeHeader(file(), "Particle phase (temperatures in K)");
+        writeHeader
+        (
+            file(),
+            zoneName_.empty()
+          ? string("Particle phase (temperatures in K)")
+          : "Particle phase in cellZone " + zoneName_
+          + " (temperatures in K)"
+        );
         writeCommented(file(), "Time");
         for
         (
@@ -69,6 +76,26 @@ bool Foam::functionObjects::particleStatistics::read(const dictionary& dict)
             << "Cloud " << cloudName_ << " of " << name() << " keeps no"
             << " granularTemperature field: it needs collisionModel"
             << " demCollision" << exit(FatalIOError);
+    }
+
+    zoneName_ = dict.lookupOrDefault<word>("cellZone", word::null);
+    selected_.clear();
+    if (!zoneName_.empty())
+    {
+        const label zonei = mesh_.cellZones().findZoneID(zoneName_);
+        if (zonei < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword cellZone of " << name() << ": no cellZone "
+                << zoneName_ << " in the mesh (make it with topoSet)."
+                << nl << "Valid cellZones are "
+                << mesh_.cellZones().names() << exit(FatalIOError);
+        }
+        selected_.setSize(mesh_.nCells(), false);
+        for (const label celli : mesh_.cellZones()[zonei])
+        {
+            selected_[celli] = true;
+        }
     }
 
     const dictionary speed(dict.subOrEmptyDict("speedDistribution"));
@@ -135,6 +162,7 @@ void Foam::functionObjects::particleStatistics::distributions
 
     for (const basicSinterParcel& p : cloud)
     {
+        if (!counts(p.cell())) continue;
         const scalar n = p.nParticle();
         speed.add(mag(cloud.velocity(p)), n);
         T.add(cloud.temperature(p), massWeighted ? n*cloud.mass(p) : n);
@@ -143,6 +171,7 @@ void Foam::functionObjects::particleStatistics::distributions
     T.reduce();
     for (const basicSinterParcel& p : cloud)
     {
+        if (!counts(p.cell())) continue;
         const scalar n = p.nParticle();
         speed.addSpread(mag(cloud.velocity(p)), n);
         T.addSpread(cloud.temperature(p), massWeighted ? n*cloud.mass(p) : n);
@@ -174,6 +203,7 @@ bool Foam::functionObjects::particleStatistics::execute()
     scalar top = 0;
     for (const basicSinterParcel& p : cloud)
     {
+        if (!counts(p.cell())) continue;
         ++parcels;
         sumTheta += Theta[p.cell()];
         const scalar m = p.nParticle()*cloud.mass(p);
