@@ -21,6 +21,12 @@
 #   studyFiles  (array) files copied into a new base: SOURCE:DEST, DEST
 #               relative to the case
 #   writeInterval  (may be empty) the controlDict's writeInterval
+#   segmentWrites  (may be empty) yes: each segment's caseSettings.run sets
+#               writeInterval to the segment's length, so that the run
+#               writes at its end wherever it restarted
+# The solver reads caseSettings.run through LABBED_SETTINGS (labBed); a
+# driver of another case exports its own variable (pseudo2DChapter4:
+# PSEUDO2D_SETTINGS=caseSettings.run).
 # and defines
 #   keepSummary CASE   keeps a run's summary after each segment
 # Temperatures in kelvin.
@@ -88,6 +94,9 @@ bedStudy_advance() {  # bedStudy_advance CASE END
         {
             echo '#include "caseSettings.case"'
             echo "endTime     $next;"
+            # The write times count from the restart: one write, at next
+            [ "${segmentWrites:-}" != yes ] || awk -v a="$latest" -v n="$next" \
+                'BEGIN { printf "writeInterval %.10g;\n", n - a }'
         } > "$c/system/caseSettings.run"
         echo "  $(date +%H:%M) $(basename "$c"): $latest -> $next s"
         (
@@ -95,6 +104,12 @@ bedStudy_advance() {  # bedStudy_advance CASE END
             export LABBED_SETTINGS=caseSettings.run
             bedStudy_mpi sinterFoam >> log.sinterFoam 2>&1
         ) || { echo "FAILED $(basename "$c") (see $c/log.sinterFoam)"; exit 1; }
+        if awk -v a="$(bedStudy_times "$c" | tail -1)" -v b="$latest" \
+            'BEGIN { exit !(a + 0 <= b + 1e-12) }'; then
+            echo "FAILED $(basename "$c"): the run wrote no time after $latest s" \
+                "(its writeInterval does not reach $next s?)"
+            exit 1
+        fi
         bedStudy_prune "$c"
         keepSummary "$c" | sed 's/^/  /' || echo "  summary failed for $c"
     done
