@@ -2,6 +2,7 @@
 # Checks of test/demParallel/run (see there): WORKDIR holds serial/,
 # parallel/ (reconstructed) and roundTrip/ (serial 0.02 s write decomposed
 # and reconstructed). ASCII lagrangian fields, one parcel per line.
+import collections
 import math
 import os
 import re
@@ -67,6 +68,34 @@ check(len(s) == 200 and s == p,
       f'contact counts identical in all {len(s)} steps (serial max '
       f'{max(pairs)} particle-particle, {max(walls)} particle-wall)')
 check(max(pairs) > 0 and max(walls) > 0, 'contacts of both kinds occurred')
+
+
+# ... and the list builds of every step add up by cause ("lists built N
+# times (skin n, ...)"), the first build of each run its start
+def buildCauses(case):
+    found = []
+    for l in open(f'{work}/{case}/log.sinterFoam'):
+        m = re.search(r'lists built (\d+) times(?: \(([^)]*)\))?', l)
+        if m and l.strip().startswith('DEM:'):
+            causes = {}
+            for part in (m.group(2) or '').split(', '):
+                if part:
+                    name, n = part.rsplit(' ', 1)
+                    causes[name] = int(n)
+            found.append((int(m.group(1)), causes))
+    return found
+
+
+for case in ('serial', 'parallel'):
+    b = buildCauses(case)
+    total = collections.Counter()
+    for n, c in b:
+        total.update(c)
+    check(len(b) == 200 and all(n == sum(c.values()) for n, c in b)
+          and set(total) <= {'start', 'requested', 'particles changed', 'skin'}
+          and b[0][1].get('start') == 1 and total['start'] == 1,
+          f'{case}: every step\'s list builds add up by cause '
+          f'({", ".join(f"{k} {v}" for k, v in sorted(total.items()))})')
 
 # 2. Positions, velocities and temperatures at 0.01 s, parcels matched by
 # nearest position. Not at the end: from about 0.011 s the beads land on

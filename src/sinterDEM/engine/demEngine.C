@@ -40,6 +40,7 @@ Foam::demEngine::demEngine
     lastPairs_(0),
     lastWalls_(0),
     nBuilds_(0),
+    nBuildsBy_(Zero),
     spatialSort_(false),
     movedValid_(false),
     recordIndexValid_(false)
@@ -226,13 +227,26 @@ void Foam::demEngine::beginStep()
     checkWallTemperature();
     recordIndexValid_ = false;
 
-    bool rebuildNow = rebuildRequested_ || listsExpired();
+    // Why the lists are built again (bits: 8 the run's first build, 1
+    // requested, 2 the particles changed, 4 the skin), on any processor
+    label why =
+        rebuildRequested_ ? 1 : listsChanged() ? 2 : listsExpired() ? 4 : 0;
+    if (why && nBuilds_ == 0)
+    {
+        why = 8;
+    }
     if (halo_.valid())
     {
-        reduce(rebuildNow, orOp<bool>());
+        reduce(why, bitOrOp<label>());
     }
-    if (rebuildNow)
+    if (why)
     {
+        const buildCause cause =
+            (why & 8) ? buildCause::start
+          : (why & 1) ? buildCause::requested
+          : (why & 2) ? buildCause::changed
+          : buildCause::skin;
+        ++nBuildsBy_[static_cast<int>(cause)];
         addProfiling(lists, "demEngine::lists");
         keepStates();
         rebuild();
@@ -289,6 +303,7 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
     }
     if (cold)
     {
+        ++nBuildsBy_[static_cast<int>(buildCause::start)];
         initialise();
     }
 
@@ -329,6 +344,7 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
         }
         if (expired)
         {
+            ++nBuildsBy_[static_cast<int>(buildCause::skin)];
             addProfiling(lists, "demEngine::lists");
             {
                 addProfiling(keep, "demEngine::lists::keepStates");

@@ -243,6 +243,12 @@ void Foam::demEngine::rebuild()
 }
 
 
+bool Foam::demEngine::listsChanged() const
+{
+    return !listsValid_ || builtAt_.size() != nLocal();
+}
+
+
 bool Foam::demEngine::listsExpired() const
 {
     const label nL = nLocal();

@@ -401,6 +401,14 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
 
     engine_.setTime(owner_.db().time().value() - dt);
     const label builds0 = engine_.nBuilds();
+    typedef demEngine::buildCause cause;
+    const cause causes[] =
+        {cause::start, cause::requested, cause::changed, cause::skin};
+    FixedList<label, 4> causes0;
+    forAll(causes0, k)
+    {
+        causes0[k] = engine_.nBuilds(causes[k]);
+    }
     engine_.resetPlacedOverlaps();
     engine_.beginStep();
     engine_.advance(dtDEM, nSub);
@@ -441,6 +449,25 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
             << " bridged";
     }
     Info<< "; lists built " << engine_.nBuilds() - builds0 << " times";
+    {
+        // ... and why
+        const char* names[] =
+            {"start", "requested", "particles changed", "skin"};
+        const char* sep = " (";
+        forAll(causes0, k)
+        {
+            const label n = engine_.nBuilds(causes[k]) - causes0[k];
+            if (n)
+            {
+                Info<< sep << names[k] << ' ' << n;
+                sep = ", ";
+            }
+        }
+        if (sep[0] == ',')
+        {
+            Info<< ')';
+        }
+    }
     if (Pstream::parRun())
     {
         Info<< "; " << returnReduce(engine_.nGhosts(), sumOp<label>())
