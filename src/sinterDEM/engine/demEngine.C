@@ -217,6 +217,14 @@ bool Foam::demEngine::integrate(const scalar deltaT)
 }
 
 
+const char* Foam::demEngine::name(const buildCause c)
+{
+    static const char* names[nBuildCauses] =
+        {"start", "requested", "particles changed", "skin"};
+    return names[static_cast<int>(c)];
+}
+
+
 void Foam::demEngine::beginStep()
 {
     if (nLocal_ < 0)
@@ -227,13 +235,17 @@ void Foam::demEngine::beginStep()
     checkWallTemperature();
     recordIndexValid_ = false;
 
-    // Why the lists are built again (bits: 8 the run's first build, 1
-    // requested, 2 the particles changed, 4 the skin), on any processor
+    // Why the lists are built again, on any processor: a bit per cause,
+    // the lowest set bit the cause counted
+    auto bit = [](const buildCause c) { return label(1) << int(c); };
     label why =
-        rebuildRequested_ ? 1 : listsChanged() ? 2 : listsExpired() ? 4 : 0;
+        rebuildRequested_ ? bit(buildCause::requested)
+      : listsChanged() ? bit(buildCause::changed)
+      : listsExpired() ? bit(buildCause::skin)
+      : 0;
     if (why && nBuilds_ == 0)
     {
-        why = 8;
+        why = bit(buildCause::start);
     }
     if (halo_.valid())
     {
@@ -241,15 +253,14 @@ void Foam::demEngine::beginStep()
     }
     if (why)
     {
-        const buildCause cause =
-            (why & 8) ? buildCause::start
-          : (why & 1) ? buildCause::requested
-          : (why & 2) ? buildCause::changed
-          : buildCause::skin;
-        ++nBuildsBy_[static_cast<int>(cause)];
+        int c = 0;
+        while (!(why & (label(1) << c)))
+        {
+            ++c;
+        }
         addProfiling(lists, "demEngine::lists");
         keepStates();
-        rebuild();
+        rebuild(buildCause(c));
     }
     else if (halo_.valid())
     {
@@ -289,7 +300,7 @@ void Foam::demEngine::initialise()
     }
     checkWallTemperature();
     keepStates();
-    rebuild();
+    rebuild(nBuilds_ == 0 ? buildCause::start : buildCause::changed);
     computeForces(0);
 }
 
@@ -303,7 +314,6 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
     }
     if (cold)
     {
-        ++nBuildsBy_[static_cast<int>(buildCause::start)];
         initialise();
     }
 
@@ -344,13 +354,12 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
         }
         if (expired)
         {
-            ++nBuildsBy_[static_cast<int>(buildCause::skin)];
             addProfiling(lists, "demEngine::lists");
             {
                 addProfiling(keep, "demEngine::lists::keepStates");
                 keepStates();
             }
-            rebuild();
+            rebuild(buildCause::skin);
         }
 
         time_ += deltaT;

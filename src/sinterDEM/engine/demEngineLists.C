@@ -112,8 +112,11 @@ void Foam::demEngine::sortLocals(const scalar range)
 }
 
 
-void Foam::demEngine::rebuild()
+void Foam::demEngine::rebuild(const buildCause cause)
 {
+    ++nBuilds_;
+    ++nBuildsBy_[static_cast<int>(cause)];
+
     demParticles& P = particles_;
     const label nL = nLocal();
 
@@ -143,7 +146,6 @@ void Foam::demEngine::rebuild()
         pairs_.clearStates();
         wallContacts_.clearStates();
         listsValid_ = true;
-        ++nBuilds_;
         return;
     }
 
@@ -239,7 +241,6 @@ void Foam::demEngine::rebuild()
     builtAt_ = SubList<vector>(P.position, nL);
     listsValid_ = true;
     recordIndexValid_ = false;
-    ++nBuilds_;
 }
 
 
@@ -252,7 +253,7 @@ bool Foam::demEngine::listsChanged() const
 bool Foam::demEngine::listsExpired() const
 {
     const label nL = nLocal();
-    if (!listsValid_ || builtAt_.size() != nL)
+    if (listsChanged())
     {
         return true;
     }

@@ -402,12 +402,10 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
     engine_.setTime(owner_.db().time().value() - dt);
     const label builds0 = engine_.nBuilds();
     typedef demEngine::buildCause cause;
-    const cause causes[] =
-        {cause::start, cause::requested, cause::changed, cause::skin};
-    FixedList<label, 4> causes0;
+    FixedList<label, demEngine::nBuildCauses> causes0;
     forAll(causes0, k)
     {
-        causes0[k] = engine_.nBuilds(causes[k]);
+        causes0[k] = engine_.nBuilds(cause(k));
     }
     engine_.resetPlacedOverlaps();
     engine_.beginStep();
@@ -451,19 +449,18 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
     Info<< "; lists built " << engine_.nBuilds() - builds0 << " times";
     {
         // ... and why
-        const char* names[] =
-            {"start", "requested", "particles changed", "skin"};
-        const char* sep = " (";
+        bool any = false;
         forAll(causes0, k)
         {
-            const label n = engine_.nBuilds(causes[k]) - causes0[k];
+            const label n = engine_.nBuilds(cause(k)) - causes0[k];
             if (n)
             {
-                Info<< sep << names[k] << ' ' << n;
-                sep = ", ";
+                Info<< (any ? ", " : " (") << demEngine::name(cause(k))
+                    << ' ' << n;
+                any = true;
             }
         }
-        if (sep[0] == ',')
+        if (any)
         {
             Info<< ')';
         }
