@@ -39,7 +39,6 @@ Foam::demEngine::demEngine
     rebuildRequested_(false),
     lastPairs_(0),
     lastWalls_(0),
-    nBuilds_(0),
     nBuildsBy_(Zero),
     spatialSort_(false),
     movedValid_(false),
@@ -243,7 +242,7 @@ void Foam::demEngine::beginStep()
       : listsChanged() ? bit(buildCause::changed)
       : listsExpired() ? bit(buildCause::skin)
       : 0;
-    if (why && nBuilds_ == 0)
+    if (why && nBuilds() == 0)
     {
         why = bit(buildCause::start);
     }
@@ -300,7 +299,7 @@ void Foam::demEngine::initialise()
     }
     checkWallTemperature();
     keepStates();
-    rebuild(nBuilds_ == 0 ? buildCause::start : buildCause::changed);
+    rebuild(nBuilds() == 0 ? buildCause::start : buildCause::changed);
     computeForces(0);
 }
 

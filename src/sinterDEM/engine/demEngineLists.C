@@ -114,7 +114,6 @@ void Foam::demEngine::sortLocals(const scalar range)
 
 void Foam::demEngine::rebuild(const buildCause cause)
 {
-    ++nBuilds_;
     ++nBuildsBy_[static_cast<int>(cause)];
 
     demParticles& P = particles_;
