@@ -400,7 +400,7 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
     const scalar dtDEM = dt/nSub;
 
     engine_.setTime(owner_.db().time().value() - dt);
-    const label builds0 = engine_.nBuilds();
+    // The list builds by cause before this step
     typedef demEngine::buildCause cause;
     FixedList<label, demEngine::nBuildCauses> causes0;
     forAll(causes0, k)
@@ -446,21 +446,25 @@ void Foam::DEMCollision<CloudType>::collide(const scalar dt)
             << returnReduce(engine_.nBridgedContacts(), sumOp<label>())
             << " bridged";
     }
-    Info<< "; lists built " << engine_.nBuilds() - builds0 << " times";
     {
-        // ... and why
-        bool any = false;
+        // The list builds of this step, and why
+        label built = 0;
         forAll(causes0, k)
         {
-            const label n = engine_.nBuilds(cause(k)) - causes0[k];
-            if (n)
+            causes0[k] = engine_.nBuilds(cause(k)) - causes0[k];
+            built += causes0[k];
+        }
+        Info<< "; lists built " << built << " times";
+        const char* sep = " (";
+        forAll(causes0, k)
+        {
+            if (causes0[k])
             {
-                Info<< (any ? ", " : " (") << demEngine::name(cause(k))
-                    << ' ' << n;
-                any = true;
+                Info<< sep << demEngine::name(cause(k)) << ' ' << causes0[k];
+                sep = ", ";
             }
         }
-        if (any)
+        if (built)
         {
             Info<< ')';
         }
