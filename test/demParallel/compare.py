@@ -72,8 +72,9 @@ check(max(pairs) > 0 and max(walls) > 0, 'contacts of both kinds occurred')
 
 # ... and the list builds of every step by cause ("lists built N times
 # (skin n, ...)"): the first build of each run its start and no other,
-# the beads' fall makes skin builds, every cause a known one, and N the
-# sum of the causes written
+# the beads' fall makes skin builds (with chemistry every later step is a
+# requested build instead), every cause a known one, and N the sum of the
+# causes written
 def buildCauses(case):
     found = []
     for l in open(f'{work}/{case}/log.sinterFoam'):
@@ -96,7 +97,7 @@ for case in ('serial', 'parallel'):
     check(len(b) == 200 and all(n == sum(c.values()) for n, c in b)
           and set(total) <= {'start', 'requested', 'particles changed', 'skin'}
           and b[0][1].get('start') == 1 and total['start'] == 1
-          and total['skin'] > 0,
+          and (total['skin'] > 0 or total['requested'] >= len(b) - 1),
           f'{case}: list builds by cause, the start once and first '
           f'({", ".join(f"{k} {v}" for k, v in sorted(total.items()))})')
 
