@@ -151,7 +151,8 @@ check(dT <= TEMPERATURE_TOL, f'largest temperature difference {dT:.3g} K '
 fields = ['U', 'd', 'angularVelocity', 'contactForce', 'contactTorque',
           'demContactPartner', 'demContactSpring', 'demContactDuration',
           'demContactFaceCentre']
-for optional in ('demContactBridge', 'demContactIronBridge', 'reductionDegree', 'rho'):
+for optional in ('demContactBridge', 'demContactBridgeSquare', 'demContactIronBridge',
+                 'demContactIronBridgeSquare', 'reductionDegree', 'rho'):
     if os.path.exists(f'{work}/serial/0.02/lagrangian/cloud/{optional}'):
         fields.append(optional)
 ironNecks = f'{work}/serial/0.02/lagrangian/cloud/demContactIronBridge'

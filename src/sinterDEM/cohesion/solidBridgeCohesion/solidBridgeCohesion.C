@@ -223,7 +223,9 @@ Foam::cohesionModels::solidBridge::solidBridge
         )
     ),
     bridgeSlot_(slots.addScalar("bridge", typeName, false)),
-    ironBridgeSlot_(-1)
+    bridgeSquareSlot_(slots.addScalar("bridgeSquare", typeName, false)),
+    ironBridgeSlot_(-1),
+    ironBridgeSquareSlot_(-1)
 {
     const dictionary* ironDict = law.materials().reducedSurfaceDict();
     if (ironDict)
@@ -231,6 +233,8 @@ Foam::cohesionModels::solidBridge::solidBridge
         ironMaterial_.reset(new sinterMaterial(*ironDict));
         ironLaw_.reset(new Foam::solidBridge(ironMaterial_(), coeffs_));
         ironBridgeSlot_ = slots.addScalar("ironBridge", typeName, false);
+        ironBridgeSquareSlot_ =
+            slots.addScalar("ironBridgeSquare", typeName, false);
         Info<< "    solid bridges of reduced surfaces: the iron-iron"
             << " micro-contacts grow with the data of material "
             << ironMaterial_().name() << " (reducedSurface), the share"
