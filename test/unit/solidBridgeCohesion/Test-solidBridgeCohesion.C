@@ -212,6 +212,21 @@ scalar ironReference(const scalar T, const scalar t)
 }
 
 
+//- The offset of the slot of that name
+label slotOffset(const demEngine& e, const word& name)
+{
+    for (const contactSlots::slot& s : e.slots().slots())
+    {
+        if (s.name == name)
+        {
+            return s.offset;
+        }
+    }
+    FatalErrorInFunction << "no slot " << name << exit(FatalError);
+    return -1;
+}
+
+
 //- Two spheres with surface iron fractions f0, f1 (f1 < 0: f0 on a
 //  wall) held in contact at T for n steps, the fractions switched to
 //  (g0, g1) after nSwitch steps: the bridge force, with cohesion minus
@@ -280,13 +295,7 @@ result reducedRun
         if (!k)
         {
             const contactList& C = wall ? e.wallContacts() : e.pairs();
-            for (const contactSlots::slot& sl : e.slots().slots())
-            {
-                if (sl.name == "ironBridge")
-                {
-                    x7Fe = C.stateOf(0)[sl.offset];
-                }
-            }
+            x7Fe = C.stateOf(0)[slotOffset(e, "ironBridge")];
         }
     }
     // Attractive: towards particle 1 (+x) or the wall (-z)
@@ -310,21 +319,6 @@ scalar reference(const scalar K, const scalar T, const scalar t, const scalar C)
     return
         std::pow(K, 12.0/7.0)*C*constant::mathematical::pi*sigma
        *std::pow(x7, 2.0/7.0);
-}
-
-
-//- The offset of the slot of that name
-label slotOffset(const demEngine& e, const word& name)
-{
-    for (const contactSlots::slot& s : e.slots().slots())
-    {
-        if (s.name == name)
-        {
-            return s.offset;
-        }
-    }
-    FatalErrorInFunction << "no slot " << name << exit(FatalError);
-    return -1;
 }
 
 
