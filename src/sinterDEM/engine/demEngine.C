@@ -148,6 +148,7 @@ void Foam::demEngine::computeForces(const scalar deltaT)
 
     sizeWallAccumulators();
     kernel_->pairs(P, pairs_, deltaT, time_);
+    walls_.update(P, wallContacts_, conduction_.needsGasConductivity());
     kernel_->walls
     (
         P, wallContacts_, walls_, deltaT, time_, wallFaceImpulse_.data()
@@ -368,6 +369,7 @@ void Foam::demEngine::advance(const scalar deltaT, const label nSteps)
         }
         {
             addProfiling(wallLoop, "demEngine::walls");
+            walls_.update(P, wallContacts_, conduction_.needsGasConductivity());
             kernel_->walls
             (
                 P, wallContacts_, walls_, deltaT, time_,

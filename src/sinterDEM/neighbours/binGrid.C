@@ -61,109 +61,133 @@ void Foam::binGrid::build(const UList<vector>& positions, const scalar width)
 }
 
 
-template<class PairOp>
-void Foam::binGrid::forEachPair
+void Foam::binGrid::copySorted(const demParticles& P, const label nLocal)
+{
+    const label n = sorted_.size();
+    xSorted_.setSize(n);
+    rSorted_.setSize(n);
+    localSorted_.setSize(n);
+    for (label p = 0; p < n; ++p)
+    {
+        const label i = sorted_[p];
+        xSorted_[p] = P.position[i];
+        rSorted_[p] = P.radius[i];
+        localSorted_[p] = (i < nLocal);
+    }
+}
+
+
+template<bool Emit>
+Foam::label Foam::binGrid::scanPairs
 (
-    const demParticles& P,
-    const label nLocal,
     const scalar skin,
-    const PairOp& op
+    DynamicList<label>& A,
+    DynamicList<label>& B,
+    label n
 ) const
 {
-    // Forward half of the 26 neighbours
-    static const label offsets[13][3] =
+    const vector* __restrict__ x = xSorted_.cdata();
+    const scalar* __restrict__ r = rSorted_.cdata();
+    const char* __restrict__ local = localSorted_.cdata();
+    const label* __restrict__ index = sorted_.cdata();
+    const label* __restrict__ start = start_.cdata();
+
+    // The bins' forward half of the 26 neighbours as contiguous runs of
+    // the sorted particles: the next bin along x (joined to the rest of
+    // the particle's own bin), the row of three bins at y + 1, and the
+    // three rows at z + 1
+    auto row = [&](const label ix, const label jy, const label jz, label& b0, label& b1)
     {
-        {1, 0, 0},
-        {-1, 1, 0}, {0, 1, 0}, {1, 1, 0},
-        {-1, -1, 1}, {0, -1, 1}, {1, -1, 1},
-        {-1, 0, 1}, {0, 0, 1}, {1, 0, 1},
-        {-1, 1, 1}, {0, 1, 1}, {1, 1, 1}
+        const label base = nx_*(jy + ny_*jz);
+        b0 = start[max(ix - 1, 0) + base];
+        b1 = start[min(ix + 1, nx_ - 1) + base + 1];
     };
 
-    const UList<vector>& x = P.position;
-    const UList<scalar>& r = P.radius;
-
-    auto test = [&](const label a, const label b)
-    {
-        const scalar range = r[a] + r[b] + skin;
-        if
-        (
-            (a < nLocal || b < nLocal)
-         && magSqr(x[a] - x[b]) < range*range
-        )
-        {
-            op(min(a, b), max(a, b));
-        }
-    };
-
+    label rowBegin[4];
+    label rowEnd[4];
     for (label iz = 0; iz < nz_; ++iz)
     {
         for (label iy = 0; iy < ny_; ++iy)
         {
             for (label ix = 0; ix < nx_; ++ix)
             {
-                const label b = ix + nx_*(iy + ny_*iz);
-                const label s = start_[b];
-                const label e = start_[b + 1];
-
-                for (label p = s; p < e; ++p)
+                const label bin = ix + nx_*(iy + ny_*iz);
+                const label s = start[bin];
+                const label e = start[bin + 1];
+                if (s == e)
                 {
-                    for (label q = p + 1; q < e; ++q)
+                    continue;
+                }
+
+                const label ownEnd = start[bin + 1 + (ix + 1 < nx_)];
+                label nRows = 0;
+                label perParticle = ownEnd - s;
+                if (iy + 1 < ny_)
+                {
+                    row(ix, iy + 1, iz, rowBegin[nRows], rowEnd[nRows]);
+                    perParticle += rowEnd[nRows] - rowBegin[nRows];
+                    ++nRows;
+                }
+                if (iz + 1 < nz_)
+                {
+                    for (label jy = max(iy - 1, 0); jy <= min(iy + 1, ny_ - 1); ++jy)
                     {
-                        test(sorted_[p], sorted_[q]);
+                        row(ix, jy, iz + 1, rowBegin[nRows], rowEnd[nRows]);
+                        perParticle += rowEnd[nRows] - rowBegin[nRows];
+                        ++nRows;
                     }
                 }
 
-                for (const auto& o : offsets)
+                // Room for every candidate of the bin: the capacity first,
+                // then DynamicList's doubling
+                const label need = n + (e - s)*perParticle;
+                if (Emit && need > A.size())
                 {
-                    const label jx = ix + o[0];
-                    const label jy = iy + o[1];
-                    const label jz = iz + o[2];
-                    if
-                    (
-                        jx < 0 || jx >= nx_ || jy < 0 || jy >= ny_
-                     || jz >= nz_
-                    )
+                    const label room = max(need, A.capacity());
+                    A.setSize(room);
+                    B.setSize(room);
+                }
+                label* __restrict__ a = A.data();
+                label* __restrict__ b = B.data();
+
+                for (label p = s; p < e; ++p)
+                {
+                    const vector xp = x[p];
+                    const scalar rp = r[p];
+                    const char lp = local[p];
+                    const label ip = index[p];
+
+                    // The test of the earlier pair loop, range (r_p + r_q)
+                    // + skin: the same pairs to the last bit
+                    auto scan = [&](const label q0, const label q1)
                     {
-                        continue;
-                    }
-                    const label nb = jx + nx_*(jy + ny_*jz);
-                    for (label p = s; p < e; ++p)
-                    {
-                        for (label q = start_[nb]; q < start_[nb + 1]; ++q)
+                        for (label q = q0; q < q1; ++q)
                         {
-                            test(sorted_[p], sorted_[q]);
+                            const scalar range = rp + r[q] + skin;
+                            const bool within =
+                                magSqr(xp - x[q]) < range*range;
+                            const bool counts = within & ((lp | local[q]) != 0);
+                            if (Emit)
+                            {
+                                const label iq = index[q];
+                                a[n] = min(ip, iq);
+                                b[n] = max(ip, iq);
+                            }
+                            n += counts;
                         }
+                    };
+
+                    scan(p + 1, ownEnd);
+                    for (label k = 0; k < nRows; ++k)
+                    {
+                        scan(rowBegin[k], rowEnd[k]);
                     }
                 }
             }
         }
     }
+    return n;
 }
-
-
-namespace
-{
-
-struct appendPair
-{
-    Foam::contactList& list;
-    void operator()(const Foam::label a, const Foam::label b) const
-    {
-        list.append(a, b);
-    }
-};
-
-struct countPair
-{
-    Foam::label& n;
-    void operator()(const Foam::label, const Foam::label) const
-    {
-        ++n;
-    }
-};
-
-} // End anonymous namespace
 
 
 void Foam::binGrid::pairs
@@ -172,9 +196,14 @@ void Foam::binGrid::pairs
     const label nLocal,
     const scalar skin,
     contactList& result
-) const
+)
 {
-    forEachPair(P, nLocal, skin, appendPair{result});
+    copySorted(P, nLocal);
+    const label n0 = result.size();
+    const label n = scanPairs<true>(skin, result.first, result.second, n0);
+    result.first.setSize(n);
+    result.second.setSize(n);
+    result.completeEntries();
 }
 
 
@@ -183,9 +212,9 @@ Foam::label Foam::binGrid::countPairs
     const demParticles& P,
     const label nLocal,
     const scalar skin
-) const
+)
 {
-    label n = 0;
-    forEachPair(P, nLocal, skin, countPair{n});
-    return n;
+    copySorted(P, nLocal);
+    DynamicList<label> none;
+    return scanPairs<false>(skin, none, none, 0);
 }

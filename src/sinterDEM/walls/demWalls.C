@@ -27,12 +27,34 @@ Foam::demWalls::demWalls
             << material_.size() << " wall materials for " << faces_.size()
             << " faces" << exit(FatalError);
     }
+    cornerStart_.setSize(faces_.size() + 1);
+    cornerStart_[0] = 0;
     forAll(faces_, f)
     {
         normals_[f] = faces_[f].unitNormal(points_);
         boxes_[f] = boundBox(points_, faces_[f], false);
+        cornerStart_[f + 1] = cornerStart_[f] + faces_[f].size();
+    }
+    corners_.setSize(cornerStart_.last());
+    forAll(faces_, f)
+    {
+        forAll(faces_[f], e)
+        {
+            corners_[cornerStart_[f] + e] = points_[faces_[f][e]];
+        }
     }
 }
+
+
+namespace
+{
+
+// A centre farther from a face's plane than this times the reach cannot
+// come within the reach of the face: the closest point lies in the plane,
+// at least as far; the margin covers the rounding of both distances
+constexpr Foam::scalar planeMargin = 1 + 1e-9;
+
+} // End anonymous namespace
 
 
 Foam::point Foam::demWalls::closestPoint
@@ -42,17 +64,18 @@ Foam::point Foam::demWalls::closestPoint
     bool& interior
 ) const
 {
-    const face& fc = faces_[f];
+    const point* __restrict__ corner = corners_.cdata() + cornerStart_[f];
+    const label nc = cornerStart_[f + 1] - cornerStart_[f];
     const vector& n = normals_[f];
-    const point& p0 = points_[fc[0]];
+    const point& p0 = corner[0];
 
     // Projection onto the plane, inside if on the inner side of every edge
     const point proj = x - ((x - p0) & n)*n;
     interior = true;
-    forAll(fc, e)
+    for (label e = 0; e < nc; ++e)
     {
-        const point& a = points_[fc[e]];
-        const point& b = points_[fc.nextLabel(e)];
+        const point& a = corner[e];
+        const point& b = corner[e + 1 < nc ? e + 1 : 0];
         if ((((b - a) ^ (proj - a)) & n) < 0)
         {
             interior = false;
@@ -67,10 +90,10 @@ Foam::point Foam::demWalls::closestPoint
     // Nearest point on the boundary edges
     point best = p0;
     scalar bestDist2 = GREAT;
-    forAll(fc, e)
+    for (label e = 0; e < nc; ++e)
     {
-        const point& a = points_[fc[e]];
-        const point& b = points_[fc.nextLabel(e)];
+        const point& a = corner[e];
+        const point& b = corner[e + 1 < nc ? e + 1 : 0];
         const vector ab = b - a;
         const scalar t =
             min(max(((x - a) & ab)/max(magSqr(ab), VSMALL), scalar(0)), scalar(1));
@@ -210,6 +233,11 @@ void Foam::demWalls::candidates
             {
                 continue;
             }
+            const scalar above = (x - corners_[cornerStart_[f]]) & normals_[f];
+            if (mag(above) > planeMargin*range)
+            {
+                continue;
+            }
             bool interior;
             const point c = closestPoint(f, x, interior);
             if (magSqr(x - c) < range*range)
@@ -224,14 +252,16 @@ void Foam::demWalls::candidates
 void Foam::demWalls::update
 (
     const demParticles& P,
-    contactList& contacts
+    contactList& contacts,
+    const bool gaps
 ) const
 {
     const label nc = contacts.size();
 
-    // Interior flags and closest points of one particle's contacts
-    DynamicList<bool> interior;
-    DynamicList<point> closest;
+    // Where the closest points of one particle's contacts lie, and the
+    // points
+    DynamicList<char>& kind = kind_;
+    DynamicList<point>& closest = closest_;
 
     label s = 0;
     while (s < nc)
@@ -246,26 +276,44 @@ void Foam::demWalls::update
         const point& x = P.position[i];
         const scalar r = P.radius[i];
 
-        interior.clear();
+        kind.clear();
         closest.clear();
         bool anyInterior = false;
         for (label k = s; k < e; ++k)
         {
+            const label f = contacts.second[k];
+            if
+            (
+                !gaps
+             && mag((x - corners_[cornerStart_[f]]) & normals_[f])
+              > planeMargin*r
+            )
+            {
+                closest.append(x);
+                kind.append(offPlane);
+                continue;
+            }
             bool in;
-            closest.append(closestPoint(contacts.second[k], x, in));
+            closest.append(closestPoint(f, x, in));
             const bool touching = magSqr(x - closest.last()) < r*r;
-            interior.append(in);
+            kind.append(in ? inside : onEdge);
             anyInterior = anyInterior || (in && touching);
         }
 
         for (label k = s; k < e; ++k)
         {
+            if (kind[k - s] == offPlane)
+            {
+                contacts.overlap[k] = -GREAT;
+                continue;
+            }
+            const bool interior = (kind[k - s] == inside);
             const point& cp = closest[k - s];
             const vector d = x - cp;
             const scalar dist = mag(d);
 
             bool counts = dist < r;
-            if (counts && !interior[k - s])
+            if (counts && !interior)
             {
                 // Edge or corner: only without an interior contact, and
                 // once per point
@@ -293,7 +341,7 @@ void Foam::demWalls::update
             {
                 // No contact: the gap of a face the particle lies over
                 // (indirect conduction), none through an edge or corner
-                contacts.overlap[k] = interior[k - s] ? r - dist : -GREAT;
+                contacts.overlap[k] = interior ? r - dist : -GREAT;
             }
         }
 
