@@ -81,6 +81,7 @@ void Foam::DEMGasCoupling<CloudType>::start
     (
         engine.nLocal(), implicitHeat, owner_.thermo().thermo().T()
     );
+    startPosition_.setSize(engine.nLocal());
     const scalar Cp = owner_.constProps().Cp0();
     for (parcelType& p : cloud)
     {
@@ -148,6 +149,7 @@ void Foam::DEMGasCoupling<CloudType>::start
 
         // The position after tracking
         P.position[n] = x;
+        startPosition_[n] = x;
         P.externalForce[n] = Fcp.Su() + Fncp.Su();
         P.dragCoeff[n] = Fcp.Sp();
         P.fluidVelocity[n] = td.Uc();

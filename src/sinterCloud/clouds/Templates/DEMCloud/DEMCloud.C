@@ -273,7 +273,8 @@ void Foam::DEMCloud<CloudType>::motion
     for (parcelType& p : cloud)
     {
         gas_->finish(p, P);
-        p.displacement() = P.position[p.demIndex()] - p.position();
+        p.displacement() =
+            P.position[p.demIndex()] - gas_->startPosition(p.demIndex());
     }
 
     // OpenFOAM's cloud function objects read the parcels' own fields

@@ -68,7 +68,9 @@ bool Foam::DEMParcel<ParcelType>::move
 
     while (ttd.keepParticle && !ttd.switchProcessor && p.stepFraction() < 1)
     {
-        const point start = p.position();
+        // The start of the move, for the cloud's function objects only
+        const point start =
+            cloud.functions().size() ? p.position() : point::zero;
         const scalar sfrac = p.stepFraction();
         const scalar f = 1 - sfrac;
 
