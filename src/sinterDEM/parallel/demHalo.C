@@ -7,6 +7,7 @@
 #include "UIPstream.H"
 #include "UOPstream.H"
 #include "registerSwitch.H"
+#include "profiling.H"
 
 #include <algorithm>
 #include <cmath>
@@ -51,10 +52,15 @@ void Foam::demHalo::select
         region.add(P.position[i]);
     }
 
+    // (The profiling phases below split the choice: the regions' exchange
+    // waits for every processor to reach the build)
     List<boundBox> regions(Pstream::nProcs());
     regions[Pstream::myProcNo()] = region;
-    Pstream::gatherList(regions);
-    Pstream::scatterList(regions);
+    {
+        addProfiling(regionsExchange, "demHalo::select::regions");
+        Pstream::gatherList(regions);
+        Pstream::scatterList(regions);
+    }
 
     // Neighbours: enlarged regions that overlap (a symmetric relation)
     DynamicList<label> nbrs;
@@ -117,6 +123,7 @@ void Foam::demHalo::select
     };
 
     // This processor's occupied bins, each once
+    addProfiling(ownBinsPhase, "demHalo::select::bins");
     List<FixedList<label, 3>> bin(nLocal);
     std::vector<std::uint64_t> ownBins(nLocal);
     for (label i = 0; i < nLocal; ++i)
@@ -127,9 +134,12 @@ void Foam::demHalo::select
     std::sort(ownBins.begin(), ownBins.end());
     ownBins.erase(std::unique(ownBins.begin(), ownBins.end()), ownBins.end());
 
+    endProfiling(ownBinsPhase);
+
     // The neighbours' occupied bins
     List<labelList> nbrBins(neighbours_.size());
     {
+        addProfiling(binsExchange, "demHalo::select::binsExchange");
         PstreamBuffers binBuffers(Pstream::commsTypes::nonBlocking);
         labelList mine(3*ownBins.size());
         label n = 0;
@@ -166,6 +176,7 @@ void Foam::demHalo::select
         reported = true;
     }
 
+    addProfiling(choose, "demHalo::select::choose");
     sendMap_.setSize(neighbours_.size());
     forAll(neighbours_, k)
     {
@@ -267,43 +278,129 @@ void Foam::demHalo::select
         sendMap_[k].transfer(send);
     }
 
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    endProfiling(choose);
+
+    addProfiling(ghostsExchange, "demHalo::select::ghostsExchange");
+
+    // How many ghosts each neighbour sends
+    const int tag = UPstream::msgType();
+    nReceived_.setSize(neighbours_.size());
+    labelList nSendTo(neighbours_.size());
+    {
+        const label startRequest = UPstream::nRequests();
+        forAll(neighbours_, k)
+        {
+            nSendTo[k] = sendMap_[k].size();
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<char*>(&nReceived_[k]),
+                sizeof(label),
+                tag
+            );
+        }
+        forAll(neighbours_, k)
+        {
+            UOPstream::write
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<const char*>(&nSendTo[k]),
+                sizeof(label),
+                tag
+            );
+        }
+        UPstream::waitRequests(startRequest);
+    }
+
+    // The ghosts, one packed message each way per neighbour: 15 scalars
+    // and the identity's two labels (exact as scalars) per ghost
+    const label nv = 17;
+    label nSend = 0;
+    label nRecv = 0;
     forAll(neighbours_, k)
     {
-        UOPstream os(neighbours_[k], buffers);
-        const labelList& send = sendMap_[k];
-        os << send.size();
-        for (const label i : send)
+        nSend += nSendTo[k];
+        nRecv += nReceived_[k];
+    }
+    sendBuf_.resize(nSend*nv);
+    recvBuf_.resize(nRecv*nv);
+
+    const label startRequest = UPstream::nRequests();
+    label offset = 0;
+    forAll(neighbours_, k)
+    {
+        const label n = nReceived_[k]*nv;
+        if (n)
         {
-            // The identity as two labels (OpenFOAM's streams write
-            // 64-bit integers as labels)
-            os  << P.position[i] << P.velocity[i] << P.angularVelocity[i]
-                << P.radius[i] << P.invMass[i] << P.invInertia[i]
-                << P.temperature[i] << P.gasConductivity[i]
-                << P.surfaceIron[i]
-                << identityProc(P.identity[i]) << identityIndex(P.identity[i]);
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<char*>(recvBuf_.data() + offset),
+                n*sizeof(scalar),
+                tag
+            );
+        }
+        offset += n;
+    }
+
+    scalar* __restrict__ b = sendBuf_.data();
+    offset = 0;
+    forAll(neighbours_, k)
+    {
+        const label start = offset;
+        for (const label i : sendMap_[k])
+        {
+            const vector& x = P.position[i];
+            const vector& v = P.velocity[i];
+            const vector& w = P.angularVelocity[i];
+            b[offset++] = x.x(); b[offset++] = x.y(); b[offset++] = x.z();
+            b[offset++] = v.x(); b[offset++] = v.y(); b[offset++] = v.z();
+            b[offset++] = w.x(); b[offset++] = w.y(); b[offset++] = w.z();
+            b[offset++] = P.radius[i];
+            b[offset++] = P.invMass[i];
+            b[offset++] = P.invInertia[i];
+            b[offset++] = P.temperature[i];
+            b[offset++] = P.gasConductivity[i];
+            b[offset++] = P.surfaceIron[i];
+            b[offset++] = identityProc(P.identity[i]);
+            b[offset++] = identityIndex(P.identity[i]);
+        }
+        if (offset > start)
+        {
+            UOPstream::write
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<const char*>(b + start),
+                (offset - start)*sizeof(scalar),
+                tag
+            );
         }
     }
-    buffers.finishedSends();
 
-    nReceived_.setSize(neighbours_.size());
-    forAll(neighbours_, k)
+    UPstream::waitRequests(startRequest);
+
+    P.resize(nLocal + nRecv);
+    const scalar* __restrict__ r = recvBuf_.cdata();
+    offset = 0;
+    for (label g = nLocal; g < nLocal + nRecv; ++g)
     {
-        UIPstream is(neighbours_[k], buffers);
-        label n;
-        is >> n;
-        nReceived_[k] = n;
-        const label start = P.size();
-        P.resize(start + n);
-        for (label i = start; i < start + n; ++i)
-        {
-            label proc, id;
-            is  >> P.position[i] >> P.velocity[i] >> P.angularVelocity[i]
-                >> P.radius[i] >> P.invMass[i] >> P.invInertia[i]
-                >> P.temperature[i] >> P.gasConductivity[i]
-                >> P.surfaceIron[i] >> proc >> id;
-            P.identity[i] = makeIdentity(proc, id);
-        }
+        P.position[g] = vector(r[offset], r[offset + 1], r[offset + 2]);
+        P.velocity[g] = vector(r[offset + 3], r[offset + 4], r[offset + 5]);
+        P.angularVelocity[g] =
+            vector(r[offset + 6], r[offset + 7], r[offset + 8]);
+        P.radius[g] = r[offset + 9];
+        P.invMass[g] = r[offset + 10];
+        P.invInertia[g] = r[offset + 11];
+        P.temperature[g] = r[offset + 12];
+        P.gasConductivity[g] = r[offset + 13];
+        P.surfaceIron[g] = r[offset + 14];
+        P.identity[g] =
+            makeIdentity(label(r[offset + 15]), label(r[offset + 16]));
+        offset += nv;
     }
 }
 
