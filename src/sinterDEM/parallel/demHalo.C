@@ -327,30 +327,10 @@ void Foam::demHalo::select
     sendBuf_.resize(nSend*nv);
     recvBuf_.resize(nRecv*nv);
 
-    const label startRequest = UPstream::nRequests();
+    scalar* __restrict__ b = sendBuf_.data();
     label offset = 0;
     forAll(neighbours_, k)
     {
-        const label n = nReceived_[k]*nv;
-        if (n)
-        {
-            UIPstream::read
-            (
-                UPstream::commsTypes::nonBlocking,
-                neighbours_[k],
-                reinterpret_cast<char*>(recvBuf_.data() + offset),
-                n*sizeof(scalar),
-                tag
-            );
-        }
-        offset += n;
-    }
-
-    scalar* __restrict__ b = sendBuf_.data();
-    offset = 0;
-    forAll(neighbours_, k)
-    {
-        const label start = offset;
         for (const label i : sendMap_[k])
         {
             const vector& x = P.position[i];
@@ -368,20 +348,8 @@ void Foam::demHalo::select
             b[offset++] = identityProc(P.identity[i]);
             b[offset++] = identityIndex(P.identity[i]);
         }
-        if (offset > start)
-        {
-            UOPstream::write
-            (
-                UPstream::commsTypes::nonBlocking,
-                neighbours_[k],
-                reinterpret_cast<const char*>(b + start),
-                (offset - start)*sizeof(scalar),
-                tag
-            );
-        }
     }
-
-    UPstream::waitRequests(startRequest);
+    exchangeBuffers(nv);
 
     P.resize(nLocal + nRecv);
     const scalar* __restrict__ r = recvBuf_.cdata();
@@ -402,6 +370,51 @@ void Foam::demHalo::select
             makeIdentity(label(r[offset + 15]), label(r[offset + 16]));
         offset += nv;
     }
+}
+
+
+void Foam::demHalo::exchangeBuffers(const label nv) const
+{
+    const label startRequest = UPstream::nRequests();
+    const int tag = UPstream::msgType();
+
+    label offset = 0;
+    forAll(neighbours_, k)
+    {
+        const label n = nReceived_[k]*nv;
+        if (n)
+        {
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<char*>(recvBuf_.data() + offset),
+                n*sizeof(scalar),
+                tag
+            );
+        }
+        offset += n;
+    }
+
+    offset = 0;
+    forAll(neighbours_, k)
+    {
+        const label n = sendMap_[k].size()*nv;
+        if (n)
+        {
+            UOPstream::write
+            (
+                UPstream::commsTypes::nonBlocking,
+                neighbours_[k],
+                reinterpret_cast<const char*>(sendBuf_.cdata() + offset),
+                n*sizeof(scalar),
+                tag
+            );
+        }
+        offset += n;
+    }
+
+    UPstream::waitRequests(startRequest);
 }
 
 
@@ -429,33 +442,10 @@ void Foam::demHalo::update
     sendBuf_.resize(nSend*nv);
     recvBuf_.resize(nRecv*nv);
 
-    const label startRequest = UPstream::nRequests();
-    const int tag = UPstream::msgType();
-
-    // Receives first, then the packed sends
+    scalar* __restrict__ b = sendBuf_.data();
     label offset = 0;
     forAll(neighbours_, k)
     {
-        const label n = nReceived_[k]*nv;
-        if (n)
-        {
-            UIPstream::read
-            (
-                UPstream::commsTypes::nonBlocking,
-                neighbours_[k],
-                reinterpret_cast<char*>(recvBuf_.data() + offset),
-                n*sizeof(scalar),
-                tag
-            );
-        }
-        offset += n;
-    }
-
-    scalar* __restrict__ b = sendBuf_.data();
-    offset = 0;
-    forAll(neighbours_, k)
-    {
-        const label start = offset;
         for (const label i : sendMap_[k])
         {
             const vector& x = P.position[i];
@@ -470,20 +460,8 @@ void Foam::demHalo::update
                 b[offset++] = P.gasConductivity[i];
             }
         }
-        if (offset > start)
-        {
-            UOPstream::write
-            (
-                UPstream::commsTypes::nonBlocking,
-                neighbours_[k],
-                reinterpret_cast<const char*>(b + start),
-                (offset - start)*sizeof(scalar),
-                tag
-            );
-        }
     }
-
-    UPstream::waitRequests(startRequest);
+    exchangeBuffers(nv);
 
     const scalar* __restrict__ r = recvBuf_.cdata();
     offset = 0;
