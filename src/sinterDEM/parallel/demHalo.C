@@ -13,6 +13,43 @@
 #include <cmath>
 #include <vector>
 #include <cstdint>
+
+namespace
+{
+
+// A ghost's motion in a packed buffer: position, velocity, angular
+// velocity (9 scalars); returns the offset after them
+inline Foam::label packMotion
+(
+    const Foam::demParticles& P,
+    const Foam::label i,
+    Foam::scalar* b,
+    Foam::label offset
+)
+{
+    const Foam::vector& x = P.position[i];
+    const Foam::vector& v = P.velocity[i];
+    const Foam::vector& w = P.angularVelocity[i];
+    b[offset++] = x.x(); b[offset++] = x.y(); b[offset++] = x.z();
+    b[offset++] = v.x(); b[offset++] = v.y(); b[offset++] = v.z();
+    b[offset++] = w.x(); b[offset++] = w.y(); b[offset++] = w.z();
+    return offset;
+}
+
+inline void unpackMotion
+(
+    const Foam::scalar* r,
+    Foam::demParticles& P,
+    const Foam::label g
+)
+{
+    P.position[g] = Foam::vector(r[0], r[1], r[2]);
+    P.velocity[g] = Foam::vector(r[3], r[4], r[5]);
+    P.angularVelocity[g] = Foam::vector(r[6], r[7], r[8]);
+}
+
+} // End anonymous namespace
+
 #include <unordered_set>
 
 int Foam::demHalo::gridPerParticle
@@ -333,12 +370,7 @@ void Foam::demHalo::select
     {
         for (const label i : sendMap_[k])
         {
-            const vector& x = P.position[i];
-            const vector& v = P.velocity[i];
-            const vector& w = P.angularVelocity[i];
-            b[offset++] = x.x(); b[offset++] = x.y(); b[offset++] = x.z();
-            b[offset++] = v.x(); b[offset++] = v.y(); b[offset++] = v.z();
-            b[offset++] = w.x(); b[offset++] = w.y(); b[offset++] = w.z();
+            offset = packMotion(P, i, b, offset);
             b[offset++] = P.radius[i];
             b[offset++] = P.invMass[i];
             b[offset++] = P.invInertia[i];
@@ -356,10 +388,7 @@ void Foam::demHalo::select
     offset = 0;
     for (label g = nLocal; g < nLocal + nRecv; ++g)
     {
-        P.position[g] = vector(r[offset], r[offset + 1], r[offset + 2]);
-        P.velocity[g] = vector(r[offset + 3], r[offset + 4], r[offset + 5]);
-        P.angularVelocity[g] =
-            vector(r[offset + 6], r[offset + 7], r[offset + 8]);
+        unpackMotion(r + offset, P, g);
         P.radius[g] = r[offset + 9];
         P.invMass[g] = r[offset + 10];
         P.invInertia[g] = r[offset + 11];
@@ -448,12 +477,7 @@ void Foam::demHalo::update
     {
         for (const label i : sendMap_[k])
         {
-            const vector& x = P.position[i];
-            const vector& v = P.velocity[i];
-            const vector& w = P.angularVelocity[i];
-            b[offset++] = x.x(); b[offset++] = x.y(); b[offset++] = x.z();
-            b[offset++] = v.x(); b[offset++] = v.y(); b[offset++] = v.z();
-            b[offset++] = w.x(); b[offset++] = w.y(); b[offset++] = w.z();
+            offset = packMotion(P, i, b, offset);
             if (withTemperature)
             {
                 b[offset++] = P.temperature[i];
@@ -467,10 +491,7 @@ void Foam::demHalo::update
     offset = 0;
     for (label g = nLocal; g < nLocal + nRecv; ++g)
     {
-        P.position[g] = vector(r[offset], r[offset + 1], r[offset + 2]);
-        P.velocity[g] = vector(r[offset + 3], r[offset + 4], r[offset + 5]);
-        P.angularVelocity[g] =
-            vector(r[offset + 6], r[offset + 7], r[offset + 8]);
+        unpackMotion(r + offset, P, g);
         if (withTemperature)
         {
             P.temperature[g] = r[offset + 9];
