@@ -46,15 +46,18 @@ Foam::demWalls::demWalls
 }
 
 
-namespace
+bool Foam::demWalls::beyondPlane
+(
+    const label f,
+    const point& x,
+    const scalar reach
+) const
 {
-
-// A centre farther from a face's plane than this times the reach cannot
-// come within the reach of the face: the closest point lies in the plane,
-// at least as far; the margin covers the rounding of both distances
-constexpr Foam::scalar planeMargin = 1 + 1e-9;
-
-} // End anonymous namespace
+    // The closest point lies in the plane, at least as far as the plane;
+    // the margin covers the rounding of both distances
+    const scalar above = (x - corners_[cornerStart_[f]]) & normals_[f];
+    return mag(above) > (1 + 1e-9)*reach;
+}
 
 
 Foam::point Foam::demWalls::closestPoint
@@ -233,8 +236,7 @@ void Foam::demWalls::candidates
             {
                 continue;
             }
-            const scalar above = (x - corners_[cornerStart_[f]]) & normals_[f];
-            if (mag(above) > planeMargin*range)
+            if (beyondPlane(f, x, range))
             {
                 continue;
             }
@@ -282,12 +284,7 @@ void Foam::demWalls::update
         for (label k = s; k < e; ++k)
         {
             const label f = contacts.second[k];
-            if
-            (
-                !gaps
-             && mag((x - corners_[cornerStart_[f]]) & normals_[f])
-              > planeMargin*r
-            )
+            if (!gaps && beyondPlane(f, x, r))
             {
                 closest.append(x);
                 kind.append(offPlane);
